@@ -1,0 +1,80 @@
+#include "core/LeesEdwardsBox.H"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace suspension
+{
+
+namespace
+{
+    //- x - L floor(x/L), in [0, L)
+    double periodic(double x, double L)
+    {
+        double y = x - L*std::floor(x/L);
+        return y < L ? y : 0.0;
+    }
+}
+
+
+LeesEdwardsBox::LeesEdwardsBox(const Vec3& L, double gammaDot)
+:
+    L_(L),
+    gammaDot_(gammaDot),
+    offset_(0)
+{
+    if (!(L.minCoeff() > 0))
+    {
+        throw std::invalid_argument
+        (
+            "LeesEdwardsBox: box lengths must be positive, got ("
+          + std::to_string(L.x()) + " " + std::to_string(L.y()) + " "
+          + std::to_string(L.z()) + ")"
+        );
+    }
+}
+
+
+void LeesEdwardsBox::setTime(double t)
+{
+    offset_ = periodic(gammaDot_*L_.y()*t, L_.x());
+}
+
+
+void LeesEdwardsBox::setOffset(double delta)
+{
+    offset_ = periodic(delta, L_.x());
+}
+
+
+int LeesEdwardsBox::minimumImage(Vec3& r) const
+{
+    // Shift x_j by m boxes in y so that |r_y| <= Ly/2, carrying the LE offset
+    const int m = -static_cast<int>(std::lround(r.y()/L_.y()));
+    r.y() += m*L_.y();
+    r.x() += m*offset_;
+    r.x() -= L_.x()*std::round(r.x()/L_.x());
+    r.z() -= L_.z()*std::round(r.z()/L_.z());
+    return m;
+}
+
+
+int LeesEdwardsBox::wrap(Vec3& x, Vec3& u) const
+{
+    // eq. (16a,b,d): leaving through the top re-enters at the bottom with
+    // x - delta and u_x - gammaDot Ly, and vice versa
+    const int crossings = static_cast<int>(std::floor(x.y()/L_.y()));
+    if (crossings != 0)
+    {
+        x.y() -= crossings*L_.y();
+        x.x() -= crossings*offset_;
+        u.x() -= crossings*imageVelocity();
+        if (x.y() >= L_.y()) x.y() = 0.0;  // round-off at the upper face
+    }
+    x.x() = periodic(x.x(), L_.x());      // eq. (16a)
+    x.z() = periodic(x.z(), L_.z());      // eq. (16c)
+    return crossings;
+}
+
+} // namespace suspension
