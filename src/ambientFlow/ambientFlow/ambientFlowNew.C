@@ -1,0 +1,32 @@
+#include "ambientFlow.H"
+
+// * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
+
+Foam::autoPtr<Foam::ambientFlow> Foam::ambientFlow::New
+(
+    const dictionary& dict,
+    const vector& box
+)
+{
+    const word flowType(dict.get<word>("type"));
+
+    Info<< "Selecting ambientFlow " << flowType << endl;
+
+    auto cstrIter = dictionaryConstructorTablePtr_->cfind(flowType);
+
+    if (!cstrIter.found())
+    {
+        FatalIOErrorInLookup
+        (
+            dict,
+            typeName,
+            flowType,
+            *dictionaryConstructorTablePtr_
+        ) << exit(FatalIOError);
+    }
+
+    return cstrIter()(dict, box);
+}
+
+
+// ************************************************************************* //

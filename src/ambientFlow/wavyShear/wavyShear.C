@@ -1,0 +1,66 @@
+#include "wavyShear.H"
+#include "addToRunTimeSelectionTable.H"
+
+#include <cmath>
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(wavyShear, 0);
+    addToRunTimeSelectionTable(ambientFlow, wavyShear, dictionary);
+}
+
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- Read and check the entries of eq. (17); Ly is the y edge of the box
+suspension::ShearFlow readWavyShear
+(
+    const Foam::dictionary& dict,
+    const Foam::vector& box
+)
+{
+    using namespace Foam;
+
+    const scalar gammaDot = dict.get<scalar>("shearRate");
+    const scalar amplitude = dict.get<scalar>("amplitude");
+    const scalar n = dict.get<scalar>("periods");
+
+    if (n < 1 || n != std::round(n))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'periods' = " << n << " in dictionary " << dict.name()
+            << " must be an integer >= 1: whole periods over the box"
+            << " height Ly keep the flow periodic in y" << nl
+            << exit(FatalIOError);
+    }
+
+    const scalar Ly = box.y();
+
+    if (!(Ly > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "box height Ly must be positive, got Ly = " << Ly
+            << " (box " << box << ") for dictionary " << dict.name() << nl
+            << exit(FatalIOError);
+    }
+
+    return suspension::ShearFlow(gammaDot, amplitude, n, Ly);
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::wavyShear::wavyShear(const dictionary& dict, const vector& box)
+:
+    uniformShear(box, readWavyShear(dict, box))
+{}
+
+
+// ************************************************************************* //

@@ -1,0 +1,222 @@
+// ambientFlow::writeFields on a blockMesh box: the written Uinf, gradUinf
+// and shearRateInf, read back from disk, hold the analytic values at the cell
+// centres and the boundary face centres.
+#include "testAmbientFlowTools.H"
+#include "Time.H"
+#include "fvMesh.H"
+#include "volFields.H"
+#include "mathematicalConstants.H"
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+using namespace Foam;
+using ambientFlowTest::makeFlow;
+namespace fs = std::filesystem;
+
+namespace
+{
+
+// Box 4 x 6 x 2 meshed with 4 x 8 x 2 cells, all sides one patch 'walls'
+const vector box(4, 6, 2);
+
+const char* const foamHeader =
+    "FoamFile { version 2.0; format ascii; class dictionary; object ";
+
+const char* const controlDict =
+    "controlDict; }\n"
+    "application none; startFrom startTime; startTime 0;\n"
+    "stopAt endTime; endTime 1; deltaT 0.5;\n"
+    "writeControl timeStep; writeInterval 1;\n"
+    "writeFormat ascii; writePrecision 17; writeCompression off;\n"
+    "timeFormat general; timePrecision 6; runTimeModifiable false;\n";
+
+const char* const blockMeshDict =
+    "blockMeshDict; }\n"
+    "scale 1;\n"
+    "vertices ((0 0 0) (4 0 0) (4 6 0) (0 6 0)"
+    " (0 0 2) (4 0 2) (4 6 2) (0 6 2));\n"
+    "blocks (hex (0 1 2 3 4 5 6 7) (4 8 2) simpleGrading (1 1 1));\n"
+    "edges ();\n"
+    "boundary ();\n"
+    "defaultPatch { name walls; type patch; }\n";
+
+const char* const fvSchemes =
+    "fvSchemes; }\n"
+    "ddtSchemes { default steadyState; }\n"
+    "gradSchemes { default Gauss linear; }\n"
+    "divSchemes { default none; }\n"
+    "laplacianSchemes { default Gauss linear corrected; }\n"
+    "interpolationSchemes { default linear; }\n"
+    "snGradSchemes { default corrected; }\n";
+
+const char* const fvSolution = "fvSolution; }\n";
+
+
+//- Temporary case directory, removed at the end of the test
+class AmbientFlowFields
+:
+    public ::testing::Test
+{
+protected:
+
+    fs::path caseDir_;
+
+    void SetUp() override
+    {
+        std::string tmpl =
+            (fs::temp_directory_path()/"testAmbientFlowXXXXXX").string();
+        ASSERT_NE(mkdtemp(tmpl.data()), nullptr);
+        caseDir_ = tmpl;
+
+        fs::create_directories(caseDir_/"system");
+        writeDict("controlDict", controlDict);
+        writeDict("blockMeshDict", blockMeshDict);
+        writeDict("fvSchemes", fvSchemes);
+        writeDict("fvSolution", fvSolution);
+    }
+
+    void TearDown() override
+    {
+        if (!caseDir_.empty())
+        {
+            fs::remove_all(caseDir_);
+        }
+    }
+
+    void writeDict(const std::string& name, const char* body) const
+    {
+        std::ofstream(caseDir_/"system"/name) << foamHeader << body;
+    }
+};
+
+
+//- Compare fld, cells and boundary faces, with f at the centres;
+//  every patch is calculated
+template<class Type, class Function>
+void expectAnalytic
+(
+    const GeometricField<Type, fvPatchField, volMesh>& fld,
+    const Function& f
+)
+{
+    SCOPED_TRACE(fld.name());
+    const volVectorField& C = fld.mesh().C();
+    const scalar tol = 1e-13;
+
+    forAll(fld, celli)
+    {
+        const Type expected = f(C[celli]);
+        EXPECT_LE(mag(fld[celli] - expected), tol*(1 + mag(expected)))
+            << "cell " << celli;
+    }
+
+    forAll(fld.boundaryField(), patchi)
+    {
+        const fvPatchField<Type>& pf = fld.boundaryField()[patchi];
+        const fvPatchVectorField& Cf = C.boundaryField()[patchi];
+        EXPECT_EQ(pf.type(), "calculated");
+        EXPECT_GT(pf.size(), 0);
+        forAll(pf, facei)
+        {
+            const Type expected = f(Cf[facei]);
+            EXPECT_LE(mag(pf[facei] - expected), tol*(1 + mag(expected)))
+                << "patch " << pf.patch().name() << " face " << facei;
+        }
+    }
+}
+
+} // End anonymous namespace
+
+
+TEST_F(AmbientFlowFields, WrittenFieldsHoldTheAnalyticValues)
+{
+    const std::string blockMesh =
+        "blockMesh -case '" + caseDir_.string() + "' > '"
+      + (caseDir_/"log.blockMesh").string() + "' 2>&1";
+    ASSERT_EQ(std::system(blockMesh.c_str()), 0)
+        << "see " << (caseDir_/"log.blockMesh");
+
+    Time runTime
+    (
+        Time::controlDictName,
+        caseDir_.parent_path().string(),
+        caseDir_.filename().string(),
+        "system",
+        "constant",
+        false,      // no function objects
+        false       // no libraries
+    );
+    const fvMesh mesh
+    (
+        IOobject
+        (
+            fvMesh::defaultRegion,
+            runTime.timeName(),
+            runTime,
+            IOobject::MUST_READ
+        )
+    );
+    ASSERT_EQ(mesh.nCells(), 4*8*2);
+
+    const autoPtr<ambientFlow> flow
+    (
+        makeFlow
+        (
+            "type wavyShear; shearRate 1; amplitude 2.5; periods 1;", box
+        )
+    );
+
+    // Written at the mesh's current time
+    runTime.setTime(0.5, 1);
+    flow->writeFields(mesh);
+    for (const char* name : {"Uinf", "gradUinf", "shearRateInf"})
+    {
+        EXPECT_TRUE(fs::is_regular_file(caseDir_/"0.5"/name)) << name;
+    }
+
+    // Read back from disk as ParaView's reader would see them
+    const auto readBack = [&](const word& name)
+    {
+        return IOobject
+        (
+            name, runTime.timeName(), mesh,
+            IOobject::MUST_READ, IOobject::NO_WRITE, false
+        );
+    };
+    const volVectorField Uinf(readBack("Uinf"), mesh);
+    const volTensorField gradUinf(readBack("gradUinf"), mesh);
+    const volScalarField shearRateInf(readBack("shearRateInf"), mesh);
+
+    // Eq. (17) written out: U_x = gammaDot y + A sin(k y), k = 2 pi n/Ly
+    const scalar k = constant::mathematical::twoPi/box.y();
+    const auto dUxdy = [&](const point& p)
+    {
+        return 1 + 2.5*k*std::cos(k*p.y());
+    };
+    expectAnalytic
+    (
+        Uinf,
+        [&](const point& p)
+        {
+            return vector(p.y() + 2.5*std::sin(k*p.y()), 0, 0);
+        }
+    );
+    expectAnalytic
+    (
+        gradUinf,
+        [&](const point& p)
+        {
+            tensor g(Zero);
+            g.yx() = dUxdy(p);
+            return g;
+        }
+    );
+    expectAnalytic(shearRateInf, dUxdy);
+
+    EXPECT_EQ(Uinf.dimensions(), dimVelocity);
+    EXPECT_EQ(gradUinf.dimensions(), dimless/dimTime);
+    EXPECT_EQ(shearRateInf.dimensions(), dimless/dimTime);
+}
