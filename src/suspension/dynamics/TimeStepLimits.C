@@ -1,0 +1,189 @@
+#include "dynamics/TimeStepLimits.H"
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace suspension
+{
+
+namespace
+{
+    double sphereMass(double a, double rho)
+    {
+        return 4.0/3.0*pi*a*a*a*rho;
+    }
+
+    //- Fastest relaxation time of a touching pair under Stokes drag and
+    //  lubrication: 1/lambda_max of R v = lambda M v (12 dof)
+    double pairRelaxationTime
+    (
+        const ForceModels& models,
+        double ai,
+        double aj,
+        double rho
+    )
+    {
+        const double eta = models.drag.params().eta;
+        const PairGeometry g =
+            PairGeometry::make(Vec3(ai + aj, 0, 0), ai, aj);
+
+        Lubrication::PairMatrix R = models.lubrication->resistanceMatrix(g);
+        Eigen::Matrix<double, 12, 1> M;
+        const double radius[2] = {ai, aj};
+        for (int s = 0; s < 2; ++s)
+        {
+            const double a = radius[s];
+            const double m = sphereMass(a, rho);
+            for (int d = 0; d < 3; ++d)
+            {
+                R(3*s + d, 3*s + d) += 6*pi*eta*a;          // (A.1)
+                R(6 + 3*s + d, 6 + 3*s + d) += 8*pi*eta*a*a*a;
+                M(3*s + d) = m;
+                M(6 + 3*s + d) = 0.4*m*a*a;
+            }
+        }
+        // M^-1/2 R M^-1/2 is symmetric with the same eigenvalues
+        const Eigen::Matrix<double, 12, 1> s = M.cwiseInverse().cwiseSqrt();
+        const Lubrication::PairMatrix A = s.asDiagonal()*R*s.asDiagonal();
+        const double lambdaMax =
+            Eigen::SelfAdjointEigenSolver<Lubrication::PairMatrix>
+            (
+                A, Eigen::EigenvaluesOnly
+            ).eigenvalues().maxCoeff();
+        return 1/lambdaMax;
+    }
+
+    //- Largest |dF/dh| of a central force over h in [0, hMax], sampled
+    template<class Model>
+    double sampledStiffness(const Model& model, double ai, double aj, double hMax)
+    {
+        const int n = 2000;
+        const double dh = hMax/n;
+        double k = 0;
+        double Fprev = 0;
+        for (int s = 0; s <= n; ++s)
+        {
+            const double h = s*dh;
+            const PairGeometry g =
+                PairGeometry::make(Vec3(ai + aj + h, 0, 0), ai, aj);
+            const double F = model.eval(g).F.x();
+            if (s > 0)
+            {
+                k = std::max(k, std::abs(F - Fprev)/dh);
+            }
+            Fprev = F;
+        }
+        return k;
+    }
+}
+
+
+TimeStepLimits::TimeStepLimits
+(
+    const ForceModels& models,
+    double aMin,
+    double aMax,
+    double rho,
+    double safety
+)
+:
+    safety_(safety)
+{
+    if (!(aMin > 0) || !(aMax >= aMin) || !(rho > 0) || !(safety > 0 && safety <= 1))
+    {
+        throw std::invalid_argument
+        (
+            "TimeStepLimits: need 0 < aMin <= aMax, rho > 0 and 0 < safety <= 1; got aMin "
+          + std::to_string(aMin) + ", aMax " + std::to_string(aMax) + ", rho "
+          + std::to_string(rho) + ", safety " + std::to_string(safety)
+        );
+    }
+
+    const double eta = models.drag.params().eta;
+    const double mMin = sphereMass(aMin, rho);
+    limits_.push_back
+    ({
+        "stokesDrag",
+        2*std::min
+        (
+            StokesDrag::relaxationTime(mMin, aMin, eta),
+            StokesDrag::rotationalRelaxationTime(0.4*mMin*aMin*aMin, aMin, eta)
+        )
+    });
+
+    const std::pair<double, double> pairs[3] =
+        {{aMin, aMin}, {aMin, aMax}, {aMax, aMax}};
+
+    auto addLimit = [&](const char* name, auto limitOfPair)
+    {
+        double dt = limitOfPair(pairs[0].first, pairs[0].second);
+        for (const auto& ab : pairs)
+        {
+            dt = std::min(dt, limitOfPair(ab.first, ab.second));
+        }
+        limits_.push_back({name, dt});
+    };
+    auto springLimit = [&](double k, double ai, double aj)
+    {
+        const double mi = sphereMass(ai, rho);
+        const double mj = sphereMass(aj, rho);
+        return 2/std::sqrt(k*(mi + mj)/(mi*mj));
+    };
+
+    if (models.lubrication)
+    {
+        addLimit("lubrication", [&](double ai, double aj)
+        {
+            return 2*pairRelaxationTime(models, ai, aj, rho);
+        });
+    }
+    if (models.contact)
+    {
+        addLimit("contact", [&](double ai, double aj)
+        {
+            const double tc = FrictionalContact::contactTimeScale
+            (
+                models.contact->params(),
+                sphereMass(ai, rho), ai, sphereMass(aj, rho), aj
+            );
+            return 2*tc/pi;
+        });
+    }
+    if (models.repulsion)
+    {
+        addLimit("repulsion", [&](double ai, double aj)
+        {
+            return springLimit(models.repulsion->maxStiffness(ai, aj), ai, aj);
+        });
+    }
+    if (models.attraction)
+    {
+        addLimit("attraction", [&](double ai, double aj)
+        {
+            const double hMax = 0.1*std::min(ai, aj);
+            return springLimit
+            (
+                sampledStiffness(*models.attraction, ai, aj, hMax), ai, aj
+            );
+        });
+    }
+}
+
+
+const TimeStepLimit& TimeStepLimits::binding() const
+{
+    return *std::min_element
+    (
+        limits_.begin(), limits_.end(),
+        [](const TimeStepLimit& a, const TimeStepLimit& b)
+        {
+            return a.value < b.value;
+        }
+    );
+}
+
+} // namespace suspension

@@ -1,0 +1,34 @@
+#include "dynamics/VelocityVerlet.H"
+
+namespace suspension
+{
+
+void VelocityVerlet::predict(Particles& p, const LeesEdwardsBox& box, double dt)
+{
+    const std::size_t N = p.size();
+
+    #pragma omp parallel for schedule(static)
+    for (std::size_t i = 0; i < N; ++i)
+    {
+        const Vec3 alpha = p.F[i]/p.m[i];
+        p.x[i] += dt*p.u[i] + 0.5*dt*dt*alpha;      // (15a)
+        p.u[i] += 0.5*dt*alpha;                     // (15b)
+        p.omega[i] += 0.5*dt*p.T[i]/p.I[i];
+        box.wrap(p.x[i], p.u[i]);                   // (16)
+    }
+}
+
+
+void VelocityVerlet::correct(Particles& p, double dt)
+{
+    const std::size_t N = p.size();
+
+    #pragma omp parallel for schedule(static)
+    for (std::size_t i = 0; i < N; ++i)
+    {
+        p.u[i] += 0.5*dt*p.F[i]/p.m[i];             // (15d)
+        p.omega[i] += 0.5*dt*p.T[i]/p.I[i];
+    }
+}
+
+} // namespace suspension

@@ -1,0 +1,50 @@
+#include "forces/ElectroChemicalScales.H"
+
+namespace suspension
+{
+
+ElectroChemicalScales::ElectroChemicalScales(const Params& p)
+:
+    p_(p)
+{
+    const char* model = "ElectroChemicalScales";
+    checkPositive(model, "shearRateRatio", p.shearRateRatio);
+    checkPositive(model, "forceRatio", p.forceRatio);
+    checkPositive(model, "epsilonFraction", p.epsilonFraction);
+}
+
+
+double ElectroChemicalScales::FER() const
+{
+    return 1/p_.shearRateRatio;                                 // eq. (14)
+}
+
+
+double ElectroChemicalScales::hamaker() const
+{
+    const double eps = p_.epsilonFraction;                      // abar = a0 = 1
+    return 12*eps*eps*FER()/p_.forceRatio;                      // eqs. (6), (7)
+}
+
+
+ElectrostaticRepulsion::Params ElectroChemicalScales::repulsion
+(
+    double lambdaD
+) const
+{
+    ElectrostaticRepulsion::Params r;
+    r.FER = FER();
+    r.lambdaD = lambdaD;
+    return r;
+}
+
+
+VanDerWaalsAttraction::Params ElectroChemicalScales::attraction() const
+{
+    VanDerWaalsAttraction::Params a;
+    a.A = hamaker();
+    a.epsilonFraction = p_.epsilonFraction;
+    return a;
+}
+
+} // namespace suspension

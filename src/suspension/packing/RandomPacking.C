@@ -1,0 +1,334 @@
+#include "packing/RandomPacking.H"
+#include "packing/SizeDistribution.H"
+#include "search/NeighbourSearch.H"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <sstream>
+
+namespace suspension
+{
+
+namespace
+{
+    const char* const model = "RandomPacking";
+
+    //- Growth schedule: first stage and step of the stage volume fractions
+    constexpr double phiStart = 0.3;
+    constexpr double dPhi = 0.05;
+
+    //- Target gap h* - minGap and Verlet skin, in units of a_min
+    constexpr double margin = 1e-3;
+    constexpr double skin = 0.3;
+
+    //- FIRE 2.0 (Guenole et al. 2020, table 1, semi-implicit Euler)
+    constexpr double dtStart = 0.1;
+    constexpr double dtMax = 10*dtStart;
+    constexpr double dtMin = 0.02*dtStart;
+    constexpr double alphaStart = 0.25;
+    constexpr double fAlpha = 0.99;
+    constexpr double fInc = 1.1;
+    constexpr double fDec = 0.5;
+    constexpr std::size_t nDelay = 20;
+
+    //- Uniform double in [0, 1) from the top 53 bits of the engine output
+    double uniform01(std::mt19937_64& rng)
+    {
+        return static_cast<double>(rng() >> 11)*0x1.0p-53;
+    }
+
+    //- Sum of f(i) over [0, N) starting from zero: one partial sum per
+    //  thread over its static chunk, added in thread order
+    template<class T, class Term>
+    T sum(std::size_t N, const T& zero, const Term& f)
+    {
+        std::vector<T> partial(omp_get_max_threads(), zero);
+        #pragma omp parallel if(N >= searchParallelMin)
+        {
+            T s = zero;
+            #pragma omp for schedule(static)
+            for (std::size_t i = 0; i < N; ++i)
+            {
+                s += f(i);
+            }
+            partial[omp_get_thread_num()] = s;
+        }
+        T total = zero;
+        for (const T& s : partial)
+        {
+            total += s;
+        }
+        return total;
+    }
+
+    //- Harmonic overlap forces towards the target gap hTarget into p.F;
+    //  returns the number of pairs with gap below minGap. Per-thread buffers
+    //  are summed in thread order.
+    std::size_t overlapForces
+    (
+        Particles& p,
+        const LeesEdwardsBox& box,
+        const PairList& list,
+        double hTarget,
+        double minGap,
+        std::vector<std::vector<Vec3>>& threadF
+    )
+    {
+        const std::size_t N = p.size();
+        std::size_t violations = 0;
+        #pragma omp parallel if(N >= searchParallelMin)
+        {
+            std::vector<Vec3>& F = threadF[omp_get_thread_num()];
+            F.assign(N, Vec3::Zero());
+
+            #pragma omp for schedule(static) reduction(+:violations)
+            for (std::size_t i = 0; i < N; ++i)
+            {
+                for (std::size_t k = list.offset[i]; k < list.offset[i + 1]; ++k)
+                {
+                    const std::size_t j = list.j[k];
+                    Vec3 r = p.x[j] - p.x[i];
+                    box.minimumImage(r);
+                    const double d2 = r.squaredNorm();
+                    const double contact = p.a[i] + p.a[j];
+                    const double accepted = contact + minGap;
+                    const double target = contact + hTarget;
+                    if (d2 < accepted*accepted)
+                    {
+                        ++violations;
+                    }
+                    if (d2 < target*target && d2 > 0)
+                    {
+                        const Vec3 f = (target/std::sqrt(d2) - 1)*r;
+                        F[i] -= f;
+                        F[j] += f;
+                    }
+                }
+            }
+
+            const int nThreads = omp_get_num_threads();
+            #pragma omp for schedule(static)
+            for (std::size_t i = 0; i < N; ++i)
+            {
+                Vec3 Fi = Vec3::Zero();
+                for (int t = 0; t < nThreads; ++t)
+                {
+                    Fi += threadF[t][i];
+                }
+                p.F[i] = Fi;
+            }
+        }
+        return violations;
+    }
+
+}
+
+
+PackingError::PackingError(const std::string& message, double phiReached)
+:
+    std::runtime_error(message),
+    phiReached_(phiReached)
+{}
+
+
+RandomPacking::RandomPacking(const Params& p)
+:
+    p_(p)
+{
+    if (!(p.phi > 0 && p.phi < phiMax))
+    {
+        throwOutOfRange(model, "phi", p.phi, "(0, 0.74)");
+    }
+    checkNonNegative(model, "minGap", p.minGap);
+    checkPositive(model, "aspect x", p.aspect.x());
+    checkPositive(model, "aspect y", p.aspect.y());
+    checkPositive(model, "aspect z", p.aspect.z());
+    if (p.maxStageIterations < 1)
+    {
+        throwOutOfRange(model, "maxStageIterations", 0, "[1, inf)");
+    }
+    if (p.maxIterations < 1)
+    {
+        throwOutOfRange(model, "maxIterations", 0, "[1, inf)");
+    }
+}
+
+
+RandomPacking::Result RandomPacking::pack
+(
+    const std::vector<double>& radii,
+    double rho
+) const
+{
+    checkPositive(model, "rho", rho);
+    const Vec3 L = boxLengths(radii, p_.phi, p_.aspect);
+    const LeesEdwardsBox box(L, 0);
+    const std::size_t N = radii.size();
+    const double aMin = *std::min_element(radii.begin(), radii.end());
+    const double aMax = *std::max_element(radii.begin(), radii.end());
+    const double minGap = p_.minGap*aMin;
+    const double hTarget = minGap + margin*aMin;
+
+    const double range = 2*aMax + hTarget + skin*aMin;
+    if (!(L.minCoeff() >= 3*range))
+    {
+        std::ostringstream msg;
+        msg << model << ": box (" << L.transpose() << ") too small for "
+            << N << " spheres of radius up to " << aMax << ": every box length"
+            << " must be at least 3 (2 a_max + h* + skin) = " << 3*range
+            << " for the neighbour search; use more particles";
+        throw std::invalid_argument(msg.str());
+    }
+
+    // Centres uniform in the box, working radii scaled by s
+    std::mt19937_64 rng(p_.seed);
+    Particles p;
+    for (std::size_t i = 0; i < N; ++i)
+    {
+        const double x = uniform01(rng);
+        const double y = uniform01(rng);
+        const double z = uniform01(rng);
+        p.add(L.cwiseProduct(Vec3(x, y, z)), radii[i], 1, static_cast<std::int64_t>(i));
+    }
+
+    NeighbourSearch search({hTarget, skin*aMin, Stencil::half});
+    PairList list;
+    const std::vector<Vec3> Uinf(N, Vec3::Zero());
+    std::vector<std::vector<Vec3>> threadF(omp_get_max_threads());
+    Statistics stats;
+
+    // Position update with path accounting for the Verlet criterion
+    auto move = [&](double dt)
+    {
+        #pragma omp parallel for schedule(static) if(N >= searchParallelMin)
+        for (std::size_t i = 0; i < N; ++i)
+        {
+            p.x[i] += dt*p.u[i];
+            box.wrap(p.x[i], p.u[i]);
+        }
+        search.accumulate(p, Uinf, dt);
+    };
+
+    // FIRE until no pair has a gap below minGap; returns success
+    auto relax = [&]()
+    {
+        double dt = dtStart;
+        double alpha = alphaStart;
+        std::size_t nPositive = 0;
+        std::fill(p.u.begin(), p.u.end(), Vec3::Zero());
+        for (std::size_t step = 0; step < p_.maxStageIterations; ++step)
+        {
+            search.update(p, box, list, 0);
+            if (overlapForces(p, box, list, hTarget, minGap, threadF) == 0)
+            {
+                return true;
+            }
+            if (stats.iterations == p_.maxIterations)
+            {
+                return false;
+            }
+            ++stats.iterations;
+
+            const double power =
+                sum(N, 0.0, [&](std::size_t i){ return p.F[i].dot(p.u[i]); });
+            if (power > 0)
+            {
+                if (++nPositive > nDelay)
+                {
+                    dt = std::min(dt*fInc, dtMax);
+                    alpha *= fAlpha;
+                }
+            }
+            else
+            {
+                nPositive = 0;
+                if (step >= nDelay && dt*fDec >= dtMin)
+                {
+                    dt *= fDec;
+                    alpha = alphaStart;
+                }
+                // half a step back: reverse, move, stop
+                for (Vec3& u : p.u)
+                {
+                    u = -u;
+                }
+                move(0.5*dt);
+                std::fill(p.u.begin(), p.u.end(), Vec3::Zero());
+            }
+
+            #pragma omp parallel for schedule(static) if(N >= searchParallelMin)
+            for (std::size_t i = 0; i < N; ++i)
+            {
+                p.u[i] += dt*p.F[i];
+            }
+            const Eigen::Vector2d norms = sum
+            (
+                N, Eigen::Vector2d::Zero().eval(),
+                [&](std::size_t i)
+                {
+                    return Eigen::Vector2d(p.u[i].squaredNorm(), p.F[i].squaredNorm());
+                }
+            );
+            if (norms.y() > 0)
+            {
+                const double mix = alpha*std::sqrt(norms.x()/norms.y());
+                #pragma omp parallel for schedule(static) if(N >= searchParallelMin)
+                for (std::size_t i = 0; i < N; ++i)
+                {
+                    p.u[i] = (1 - alpha)*p.u[i] + mix*p.F[i];
+                }
+            }
+            move(dt);
+        }
+        return false;
+    };
+
+    double phiReached = 0;
+    for (double phiStage = std::min(p_.phi, phiStart); ; )
+    {
+        const double s = phiStage == p_.phi ? 1.0 : std::cbrt(phiStage/p_.phi);
+        for (std::size_t i = 0; i < N; ++i)
+        {
+            p.a[i] = s*radii[p.id[i]];
+        }
+        search.rebuild(p, box, list);
+        ++stats.stages;
+        if (!relax())
+        {
+            std::ostringstream msg;
+            msg << model << ": could not remove the overlaps of " << N
+                << " spheres at phi = " << phiStage << " (target phi = "
+                << p_.phi << ", seed " << p_.seed << ") within "
+                << p_.maxStageIterations << " FIRE steps per stage and "
+                << p_.maxIterations << " in all (" << stats.iterations
+                << " taken); the densest overlap-free stage reached phi = "
+                << phiReached;
+            throw PackingError(msg.str(), phiReached);
+        }
+        phiReached = phiStage;
+        if (phiStage == p_.phi)
+        {
+            break;
+        }
+        phiStage = std::min(p_.phi, phiStage + dPhi);
+    }
+    stats.builds = search.statistics().builds;
+
+    // Particles in id order, full radii (s = 1 at the last stage), at rest
+    std::vector<std::size_t> index(N);
+    for (std::size_t i = 0; i < N; ++i)
+    {
+        index[p.id[i]] = i;
+    }
+    Particles result;
+    for (std::size_t k = 0; k < N; ++k)
+    {
+        result.add(p.x[index[k]], radii[k], rho, static_cast<std::int64_t>(k));
+    }
+    return Result{result, box, stats};
+}
+
+} // namespace suspension

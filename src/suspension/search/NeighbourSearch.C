@@ -1,0 +1,264 @@
+#include "search/NeighbourSearch.H"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace suspension
+{
+
+namespace
+{
+    //- A contact keyed by the permanent ids of its pair, lo < hi, with the
+    //  state oriented from lo to hi
+    struct Contact
+    {
+        std::int64_t lo;
+        std::int64_t hi;
+        ContactState state;
+    };
+
+    bool operator<(const Contact& a, const Contact& b)
+    {
+        return a.lo < b.lo || (a.lo == b.lo && a.hi < b.hi);
+    }
+
+    bool active(const ContactState& s)
+    {
+        return s.xiT != Vec3::Zero() || s.xiR != Vec3::Zero();
+    }
+
+    ContactState reversed(const ContactState& s)
+    {
+        return ContactState{-s.xiT, -s.xiR};
+    }
+
+    //- Throws unless `list` is empty or a consistent list of the particles
+    void checkList(const Particles& p, const PairList& list)
+    {
+        const bool empty =
+            list.offset.empty() && list.j.empty() && list.history.empty();
+        const bool consistent =
+            !list.offset.empty()
+         && list.nParticles() == p.size()
+         && list.offset.back() == list.j.size()
+         && list.history.size() == list.j.size();
+        if (!empty && !consistent)
+        {
+            throw std::invalid_argument
+            (
+                "NeighbourSearch: the PairList (" + std::to_string(list.nParticles())
+              + " particles, " + std::to_string(list.nPairs()) + " pairs, "
+              + std::to_string(list.history.size()) + " histories) does not"
+                " belong to these " + std::to_string(p.size()) + " particles"
+            );
+        }
+    }
+
+    //- The active contacts of the list, sorted by their ids
+    std::vector<Contact> collectContacts(const Particles& p, const PairList& list)
+    {
+        std::vector<Contact> contacts;
+        for (std::size_t i = 0; i < list.nParticles(); ++i)
+        {
+            for (std::size_t k = list.offset[i]; k < list.offset[i + 1]; ++k)
+            {
+                const ContactState& s = list.history[k];
+                if (active(s))
+                {
+                    const std::int64_t a = p.id[i];
+                    const std::int64_t b = p.id[list.j[k]];
+                    contacts.push_back
+                    (
+                        a < b ? Contact{a, b, s} : Contact{b, a, reversed(s)}
+                    );
+                }
+            }
+        }
+        std::sort(contacts.begin(), contacts.end());
+        for (std::size_t c = 1; c < contacts.size(); ++c)
+        {
+            if (!(contacts[c - 1] < contacts[c]))
+            {
+                throw std::logic_error
+                (
+                    "NeighbourSearch: pair of ids ("
+                  + std::to_string(contacts[c].lo) + ", "
+                  + std::to_string(contacts[c].hi) + ") holds two contact"
+                    " histories; particle ids must be unique"
+                );
+            }
+        }
+        return contacts;
+    }
+
+    //- Give each slot of the new list the history of its pair; returns the
+    //  number of contacts carried
+    std::size_t restoreContacts
+    (
+        const std::vector<Contact>& contacts,
+        const Particles& p,
+        PairList& list
+    )
+    {
+        std::size_t carried = 0;
+        if (contacts.empty())
+        {
+            return carried;
+        }
+        #pragma omp parallel for reduction(+:carried) schedule(static) \
+            if(p.size() >= searchParallelMin)
+        for (std::size_t i = 0; i < list.nParticles(); ++i)
+        {
+            for (std::size_t k = list.offset[i]; k < list.offset[i + 1]; ++k)
+            {
+                const std::int64_t a = p.id[i];
+                const std::int64_t b = p.id[list.j[k]];
+                const Contact key{std::min(a, b), std::max(a, b), ContactState()};
+                const auto it =
+                    std::lower_bound(contacts.begin(), contacts.end(), key);
+                if (it != contacts.end() && it->lo == key.lo && it->hi == key.hi)
+                {
+                    list.history[k] = a < b ? it->state : reversed(it->state);
+                    ++carried;
+                }
+            }
+        }
+        return carried;
+    }
+}
+
+
+NeighbourSearch::NeighbourSearch(const Params& params)
+:
+    params_(params),
+    cells_(),
+    path_(),
+    maxPath_(0),
+    time_(0),
+    range_(0),
+    stats_()
+{
+    if (!(params.gap >= 0) || !std::isfinite(params.gap)
+     || !(params.skin >= 0) || !std::isfinite(params.skin))
+    {
+        throw std::invalid_argument
+        (
+            "NeighbourSearch: gap and skin must be finite and >= 0, got gap "
+          + std::to_string(params.gap) + ", skin " + std::to_string(params.skin)
+        );
+    }
+}
+
+
+void NeighbourSearch::accumulate
+(
+    const Particles& particles,
+    const std::vector<Vec3>& Uinf,
+    double dt
+)
+{
+    if (Uinf.size() != particles.size() || !(dt >= 0))
+    {
+        throw std::invalid_argument
+        (
+            "NeighbourSearch::accumulate: need U_inf at each of the "
+          + std::to_string(particles.size()) + " particles (got "
+          + std::to_string(Uinf.size()) + ") and dt >= 0 (got "
+          + std::to_string(dt) + ")"
+        );
+    }
+    // Not built for these particles: the next update() rebuilds anyway
+    if (path_.size() != particles.size())
+    {
+        return;
+    }
+    double m = maxPath_;
+    #pragma omp parallel for reduction(max:m) schedule(static) \
+        if(path_.size() >= searchParallelMin)
+    for (std::size_t i = 0; i < path_.size(); ++i)
+    {
+        path_[i] += (particles.u[i] - Uinf[i]).norm()*dt;
+        m = std::max(m, path_[i]);
+    }
+    maxPath_ = m;
+    time_ += dt;
+}
+
+
+bool NeighbourSearch::needsRebuild(double maxGradU) const
+{
+    if (!(maxGradU >= 0))
+    {
+        throw std::invalid_argument
+        (
+            "NeighbourSearch: maxGradU must be >= 0, got " + std::to_string(maxGradU)
+        );
+    }
+    // written so that a NaN path length also asks for a rebuild
+    return !cells_ || !(2*maxPath_ + maxGradU*range_*time_ <= params_.skin);
+}
+
+
+bool NeighbourSearch::update
+(
+    Particles& particles,
+    const LeesEdwardsBox& box,
+    PairList& list,
+    double maxGradU
+)
+{
+    const bool current =
+        cells_
+     && path_.size() == particles.size()
+     && list.nParticles() == particles.size()
+     && box.L() == cells_->L();
+    if (current && !needsRebuild(maxGradU))
+    {
+        return false;
+    }
+    rebuild(particles, box, list);
+    return true;
+}
+
+
+void NeighbourSearch::rebuild
+(
+    Particles& particles,
+    const LeesEdwardsBox& box,
+    PairList& list
+)
+{
+    checkList(particles, list);
+    const std::vector<Contact> contacts = collectContacts(particles, list);
+
+    const double gap = params_.gap + params_.skin;
+    const double range = 2*particles.maxRadius() + gap;
+    if (!cells_ || cells_->range() != range || cells_->L() != box.L())
+    {
+        cells_.emplace(box, range);
+    }
+    particles.permute(cells_->sort(particles.x));
+    cells_->findPairs(particles, box, gap, params_.stencil, list);
+
+    const std::size_t carried = restoreContacts(contacts, particles, list);
+
+    path_.assign(particles.size(), 0.0);
+    maxPath_ = 0;
+    time_ = 0;
+    range_ = range;
+
+    ++stats_.builds;
+    stats_.carried = carried;
+    stats_.dropped = contacts.size() - carried;
+    stats_.totalDropped += stats_.dropped;
+}
+
+
+std::size_t NeighbourSearch::bytes() const
+{
+    return (cells_ ? cells_->bytes() : 0) + path_.capacity()*sizeof(double);
+}
+
+} // namespace suspension

@@ -1,0 +1,34 @@
+#include "stress/Rheology.H"
+
+namespace suspension
+{
+
+Rheology::Rheology
+(
+    const ForceSummary& summary,
+    double volume,
+    double eta0,
+    double gammaDot
+)
+{
+    // 2 eta0 <E_inf>: the fluid's own stress (eq. 8)
+    Sigma = Mat3::Zero();
+    Sigma(0, 1) = Sigma(1, 0) = eta0*gammaDot;
+
+    const double scale = eta0*gammaDot;
+    for (int c = 0; c < nContributions; ++c)
+    {
+        part[c] = summary.stresslet[c]/volume;
+        Sigma += part[c];
+        etaRPart[c] = part[c](0, 1)/scale;
+    }
+
+    sigma = Sigma(0, 1);
+    N1 = Sigma(0, 0) - Sigma(1, 1);
+    N2 = Sigma(1, 1) - Sigma(2, 2);
+    Pi = -Sigma.trace()/3;
+    etaR = sigma/scale;
+    etaN = Pi/scale;
+}
+
+} // namespace suspension

@@ -1,0 +1,91 @@
+// Lees-Edwards box (eq. 16): images, wraps and the velocity jump
+#include "core/LeesEdwardsBox.H"
+#include "core/Particles.H"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace suspension;
+
+
+TEST(LeesEdwardsBox, OffsetGrowsWithStrainModuloLx)
+{
+    LeesEdwardsBox box(Vec3(10, 8, 6), 0.5);
+    box.setTime(3.0);
+    // delta = gammaDot Ly t = 0.5*8*3 = 12 -> 2 (mod 10)
+    EXPECT_NEAR(box.offset(), 2.0, 1e-12);
+    EXPECT_NEAR(box.imageVelocity(), 4.0, 1e-15);
+}
+
+
+TEST(LeesEdwardsBox, ParticleLeavingTopReentersShifted)
+{
+    LeesEdwardsBox box(Vec3(10, 8, 6), 1.0);
+    box.setTime(0.3);                       // delta = 2.4
+    Vec3 x(5.0, 8.25, 1.0);
+    Vec3 u(8.3, 0.1, 0.0);
+    const int crossings = box.wrap(x, u);
+    EXPECT_EQ(crossings, 1);
+    // x - delta, y - Ly, u_x - gammaDot Ly (hand values)
+    EXPECT_NEAR(x.x(), 2.6, 1e-12);
+    EXPECT_NEAR(x.y(), 0.25, 1e-12);
+    EXPECT_NEAR(u.x(), 0.3, 1e-12);
+    EXPECT_NEAR(u.y(), 0.1, 1e-15);
+
+    // and back through the bottom
+    Vec3 x2(1.0, -0.5, 6.5);
+    Vec3 u2(0.0, -0.1, 0.0);
+    EXPECT_EQ(box.wrap(x2, u2), -1);
+    EXPECT_NEAR(x2.x(), 3.4, 1e-12);
+    EXPECT_NEAR(x2.y(), 7.5, 1e-12);
+    EXPECT_NEAR(x2.z(), 0.5, 1e-12);
+    EXPECT_NEAR(u2.x(), 8.0, 1e-12);
+}
+
+
+TEST(LeesEdwardsBox, MinimumImageAcrossShearedBoundary)
+{
+    LeesEdwardsBox box(Vec3(10, 8, 6), 1.0);
+    box.setTime(0.3);                       // delta = 2.4
+    // i near the top, j near the bottom: j's image above sits at
+    // (x_j + delta, y_j + Ly)
+    const Vec3 xi(5.0, 7.8, 3.0);
+    const Vec3 xj(3.0, 0.1, 3.2);
+    Vec3 r = xj - xi;
+    const int m = box.minimumImage(r);
+    EXPECT_EQ(m, 1);
+    EXPECT_NEAR(r.x(), 3.0 + 2.4 - 5.0, 1e-12);
+    EXPECT_NEAR(r.y(), 0.1 + 8.0 - 7.8, 1e-12);
+    EXPECT_NEAR(r.z(), 0.2, 1e-12);
+
+    // The reverse pair gives the opposite vector and image
+    Vec3 s = xi - xj;
+    EXPECT_EQ(box.minimumImage(s), -1);
+    EXPECT_NEAR((s + r).norm(), 0, 1e-12);
+}
+
+
+TEST(LeesEdwardsBox, RejectsNonPositiveLengths)
+{
+    EXPECT_THROW(LeesEdwardsBox(Vec3(1, 0, 1), 1.0), std::invalid_argument);
+}
+
+
+TEST(Particles, MassInertiaAndPermutation)
+{
+    Particles p;
+    p.add(Vec3(1, 2, 3), 1.0, 2.0, 7);
+    p.add(Vec3(4, 5, 6), 2.0, 2.0, 9);
+    EXPECT_NEAR(p.m[0], 4.0/3.0*pi*2.0, 1e-14);
+    EXPECT_NEAR(p.I[1], 0.4*p.m[1]*4.0, 1e-12);
+    EXPECT_NEAR(p.solidVolume(), 4.0/3.0*pi*9.0, 1e-12);
+
+    p.u[0] = Vec3(1, 0, 0);
+    p.permute({1, 0});
+    EXPECT_EQ(p.id[0], 9);
+    EXPECT_EQ(p.id[1], 7);
+    EXPECT_EQ(p.u[1], Vec3(1, 0, 0));
+    EXPECT_EQ(p.x[0], Vec3(4, 5, 6));
+    EXPECT_THROW(p.add(Vec3::Zero(), -1.0, 1.0, 3), std::invalid_argument);
+}
