@@ -8,6 +8,7 @@
 #include <cmath>
 #include <random>
 #include <sstream>
+#include <utility>
 
 namespace suspension
 {
@@ -16,23 +17,37 @@ namespace
 {
     const char* const model = "RandomPacking";
 
-    //- Growth schedule: first stage and step of the stage volume fractions
+    //- Growth schedule: first stage, initial and smallest step of the stage
+    //  volume fractions
     constexpr double phiStart = 0.3;
     constexpr double dPhi = 0.05;
+    constexpr double dPhiMin = 1e-3;
 
     //- Target gap h* - minGap and Verlet skin, in units of a_min
     constexpr double margin = 1e-3;
     constexpr double skin = 0.3;
 
+    //- A stage is jammed when the rms force falls below this, in units of
+    //  a_min (the minimiser converged with overlaps left)
+    constexpr double jammedForce = 1e-10;
+
     //- FIRE 2.0 (Guenole et al. 2020, table 1, semi-implicit Euler)
     constexpr double dtStart = 0.1;
-    constexpr double dtMax = 10*dtStart;
+    constexpr double dtMax = 3*dtStart;
     constexpr double dtMin = 0.02*dtStart;
     constexpr double alphaStart = 0.25;
     constexpr double fAlpha = 0.99;
     constexpr double fInc = 1.1;
     constexpr double fDec = 0.5;
     constexpr std::size_t nDelay = 20;
+
+    //- Outcome of the minimisation of a stage
+    enum class Stage
+    {
+        overlapFree,    // every gap >= minGap
+        jammed,         // converged with overlaps left
+        unfinished      // step limit reached
+    };
 
     //- Uniform double in [0, 1) from the top 53 bits of the engine output
     double uniform01(std::mt19937_64& rng)
@@ -64,6 +79,25 @@ namespace
         return total;
     }
 
+    //- Minimum image of r = x_j - x_i for positions inside the box
+    //  (|r_d| < L_d), without shear offset. For the pairs in range
+    //  (|r| <= L/3) it equals LeesEdwardsBox::minimumImage bitwise (the
+    //  same single subtraction of L_d), at the cost of two comparisons.
+    void nearestImage(Vec3& r, const Vec3& L)
+    {
+        for (int d = 0; d < 3; ++d)
+        {
+            if (r[d] > 0.5*L[d])
+            {
+                r[d] -= L[d];
+            }
+            else if (r[d] < -0.5*L[d])
+            {
+                r[d] += L[d];
+            }
+        }
+    }
+
     //- Harmonic overlap forces towards the target gap hTarget into p.F;
     //  returns the number of pairs with gap below minGap. Per-thread buffers
     //  are summed in thread order.
@@ -91,7 +125,7 @@ namespace
                 {
                     const std::size_t j = list.j[k];
                     Vec3 r = p.x[j] - p.x[i];
-                    box.minimumImage(r);
+                    nearestImage(r, box.L());
                     const double d2 = r.squaredNorm();
                     const double contact = p.a[i] + p.a[j];
                     const double accepted = contact + minGap;
@@ -123,7 +157,6 @@ namespace
         }
         return violations;
     }
-
 }
 
 
@@ -183,15 +216,23 @@ RandomPacking::Result RandomPacking::pack
         throw std::invalid_argument(msg.str());
     }
 
-    // Centres uniform in the box, working radii scaled by s
+    // Centres uniform in the box; minimiser masses m = (a/a_min)^3; the
+    // working radii are scaled by s at each stage
     std::mt19937_64 rng(p_.seed);
+    const double unitMassDensity = 3/(4*pi*aMin*aMin*aMin);
     Particles p;
     for (std::size_t i = 0; i < N; ++i)
     {
         const double x = uniform01(rng);
         const double y = uniform01(rng);
         const double z = uniform01(rng);
-        p.add(L.cwiseProduct(Vec3(x, y, z)), radii[i], 1, static_cast<std::int64_t>(i));
+        p.add
+        (
+            L.cwiseProduct(Vec3(x, y, z)),
+            radii[i],
+            unitMassDensity,
+            static_cast<std::int64_t>(i)
+        );
     }
 
     NeighbourSearch search({hTarget, skin*aMin, Stencil::half});
@@ -212,7 +253,7 @@ RandomPacking::Result RandomPacking::pack
         search.accumulate(p, Uinf, dt);
     };
 
-    // FIRE until no pair has a gap below minGap; returns success
+    // FIRE until no pair has a gap below minGap
     auto relax = [&]()
     {
         double dt = dtStart;
@@ -224,11 +265,11 @@ RandomPacking::Result RandomPacking::pack
             search.update(p, box, list, 0);
             if (overlapForces(p, box, list, hTarget, minGap, threadF) == 0)
             {
-                return true;
+                return Stage::overlapFree;
             }
             if (stats.iterations == p_.maxIterations)
             {
-                return false;
+                return Stage::unfinished;
             }
             ++stats.iterations;
 
@@ -262,7 +303,7 @@ RandomPacking::Result RandomPacking::pack
             #pragma omp parallel for schedule(static) if(N >= searchParallelMin)
             for (std::size_t i = 0; i < N; ++i)
             {
-                p.u[i] += dt*p.F[i];
+                p.u[i] += dt/p.m[i]*p.F[i];
             }
             const Eigen::Vector2d norms = sum
             (
@@ -272,6 +313,10 @@ RandomPacking::Result RandomPacking::pack
                     return Eigen::Vector2d(p.u[i].squaredNorm(), p.F[i].squaredNorm());
                 }
             );
+            if (norms.y() < N*jammedForce*jammedForce*aMin*aMin)
+            {
+                return Stage::jammed;
+            }
             if (norms.y() > 0)
             {
                 const double mix = alpha*std::sqrt(norms.x()/norms.y());
@@ -283,11 +328,16 @@ RandomPacking::Result RandomPacking::pack
             }
             move(dt);
         }
-        return false;
+        return Stage::unfinished;
     };
 
+    // Stages: after a success grow by `step`; after a failure retry from the
+    // current positions halfway between the last success and the failed
+    // stage, until the step falls below dPhiMin
     double phiReached = 0;
-    for (double phiStage = std::min(p_.phi, phiStart); ; )
+    double step = dPhi;
+    double phiStage = std::min(p_.phi, phiStart);
+    while (true)
     {
         const double s = phiStage == p_.phi ? 1.0 : std::cbrt(phiStage/p_.phi);
         for (std::size_t i = 0; i < N; ++i)
@@ -296,24 +346,37 @@ RandomPacking::Result RandomPacking::pack
         }
         search.rebuild(p, box, list);
         ++stats.stages;
-        if (!relax())
+        const Stage outcome = relax();
+        if (outcome == Stage::overlapFree)
         {
-            std::ostringstream msg;
-            msg << model << ": could not remove the overlaps of " << N
-                << " spheres at phi = " << phiStage << " (target phi = "
-                << p_.phi << ", seed " << p_.seed << ") within "
-                << p_.maxStageIterations << " FIRE steps per stage and "
-                << p_.maxIterations << " in all (" << stats.iterations
-                << " taken); the densest overlap-free stage reached phi = "
-                << phiReached;
-            throw PackingError(msg.str(), phiReached);
+            phiReached = phiStage;
+            if (phiStage == p_.phi)
+            {
+                break;
+            }
         }
-        phiReached = phiStage;
-        if (phiStage == p_.phi)
+        else
         {
-            break;
+            step = 0.5*(phiStage - phiReached);
+            if (phiReached == 0 || step < dPhiMin || stats.iterations == p_.maxIterations)
+            {
+                std::ostringstream msg;
+                msg << model << ": could not pack " << N << " spheres at phi = "
+                    << p_.phi << " (seed " << p_.seed << "): the stage at phi = "
+                    << phiStage
+                    << (
+                           outcome == Stage::jammed
+                         ? " jammed (FIRE converged with overlaps left)"
+                         : " kept overlaps after the FIRE step limit"
+                       )
+                    << " (" << stats.iterations << " steps in all; at most "
+                    << p_.maxStageIterations << " per stage, "
+                    << p_.maxIterations << " in all); the densest"
+                    << " overlap-free stage reached phi = " << phiReached;
+                throw PackingError(msg.str(), phiReached);
+            }
         }
-        phiStage = std::min(p_.phi, phiStage + dPhi);
+        phiStage = std::min(p_.phi, phiReached + step);
     }
     stats.builds = search.statistics().builds;
 
@@ -328,7 +391,7 @@ RandomPacking::Result RandomPacking::pack
     {
         result.add(p.x[index[k]], radii[k], rho, static_cast<std::int64_t>(k));
     }
-    return Result{result, box, stats};
+    return Result{std::move(result), box, stats};
 }
 
 } // namespace suspension

@@ -1,0 +1,398 @@
+// Initial configurations: the particle population (counts, volumes, box)
+// and random packings free of overlaps (paper section 3, tables 1 and 3)
+#include "packing/RandomPacking.H"
+#include "packing/SizeDistribution.H"
+#include "search/CellList.H"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <string>
+
+using namespace suspension;
+
+namespace
+{
+    double sphereVolume(double a)
+    {
+        return 4.0/3.0*pi*a*a*a;
+    }
+
+    //- Number of radii equal to a
+    std::size_t count(const std::vector<double>& radii, double a)
+    {
+        return static_cast<std::size_t>(std::count(radii.begin(), radii.end(), a));
+    }
+
+    //- Expect `f` to throw E with `what` in its message
+    template<class E>
+    void expectThrow(const std::function<void()>& f, const std::string& what)
+    {
+        try
+        {
+            f();
+            ADD_FAILURE() << "no exception for " << what;
+        }
+        catch (const E& e)
+        {
+            EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
+        }
+    }
+
+    //- Smallest surface gap r - a_i - a_j over all pairs (minimum image)
+    double smallestGap(const Particles& p, const LeesEdwardsBox& box)
+    {
+        double h = std::numeric_limits<double>::infinity();
+        for (std::size_t i = 0; i < p.size(); ++i)
+        {
+            for (std::size_t j = i + 1; j < p.size(); ++j)
+            {
+                Vec3 r = p.x[j] - p.x[i];
+                box.minimumImage(r);
+                h = std::min(h, r.norm() - p.a[i] - p.a[j]);
+            }
+        }
+        return h;
+    }
+
+    //- The packing holds the requested spheres at rest, in the box, at the
+    //  volume fraction phi, and no pair is closer than minGap
+    void expectValidPacking
+    (
+        const RandomPacking::Result& r,
+        const std::vector<double>& radii,
+        double phi,
+        double rho,
+        double minGap
+    )
+    {
+        const Particles& p = r.particles;
+        ASSERT_EQ(p.size(), radii.size());
+        for (std::size_t i = 0; i < p.size(); ++i)
+        {
+            EXPECT_EQ(p.id[i], static_cast<std::int64_t>(i));
+            EXPECT_EQ(p.a[i], radii[i]);
+            EXPECT_DOUBLE_EQ(p.m[i], sphereVolume(radii[i])*rho);
+            EXPECT_EQ(p.u[i], Vec3::Zero());
+            EXPECT_EQ(p.omega[i], Vec3::Zero());
+            for (int d = 0; d < 3; ++d)
+            {
+                EXPECT_GE(p.x[i][d], 0);
+                EXPECT_LT(p.x[i][d], r.box.L()[d]);
+            }
+        }
+        EXPECT_EQ(r.box.shearRate(), 0);
+        EXPECT_NEAR(p.solidVolume()/r.box.volume(), phi, 1e-12);
+
+        // the acceptance test of the brief: no pair with |r| < a_i + a_j + minGap
+        PairList close;
+        bruteForcePairs(p, r.box, minGap, close);
+        EXPECT_EQ(close.nPairs(), 0u);
+        EXPECT_GE(smallestGap(p, r.box), minGap);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Size distribution  * * * * * * * * * * * * //
+
+TEST(SizeDistribution, MonodisperseRadiiAndCubicBox)
+{
+    const std::vector<double> radii = SizeDistribution::monodisperse(0.5).radii(100);
+    ASSERT_EQ(radii.size(), 100u);
+    EXPECT_EQ(count(radii, 0.5), 100u);
+
+    // L^3 phi = N 4/3 pi a^3
+    const Vec3 L = boxLengths(radii, 0.3);
+    EXPECT_DOUBLE_EQ(L.x(), L.y());
+    EXPECT_DOUBLE_EQ(L.x(), L.z());
+    EXPECT_NEAR(L.prod()*0.3, 100*sphereVolume(0.5), 1e-12*L.prod());
+}
+
+
+TEST(SizeDistribution, BidisperseCountsOfTables1And3)
+{
+    // Table 1: a2/a1 = 1.4, V2/V1 = 1. N2/N1 = 1/1.4^3 = 0.364431,
+    // N2 = 200 x 0.364431/1.364431 = 53.42 -> 53; 1000 -> 267.09 -> 267
+    // Table 3: a2/a1 = 3, V2/V1 = 0.25. N2/N1 = 0.25/27 = 0.00925926,
+    // N2 = 4096 x 0.00917431 = 37.58 -> 38; 65536 -> 601.25 -> 601
+    struct Case { double sizeRatio, volumeRatio; std::size_t N, N2; };
+    for (const Case& c : {Case{1.4, 1, 200, 53}, Case{1.4, 1, 1000, 267},
+                          Case{3, 0.25, 4096, 38}, Case{3, 0.25, 65536, 601}})
+    {
+        const double a1 = 1;
+        const double a2 = c.sizeRatio*a1;
+        const std::vector<double> radii =
+            SizeDistribution::bidisperse(a1, c.sizeRatio, c.volumeRatio).radii(c.N);
+        ASSERT_EQ(radii.size(), c.N);
+        EXPECT_EQ(count(radii, a2), c.N2) << "N = " << c.N;
+        EXPECT_EQ(count(radii, a1), c.N - c.N2) << "N = " << c.N;
+        EXPECT_TRUE(std::is_sorted(radii.begin(), radii.end()));
+
+        // N2 rounds the exact count n* = N (V2/V1)/((a2/a1)^3 + V2/V1), so
+        // the realised V2/V1 lies between its values at n* -+ 1/2
+        const double nStar =
+            c.N*c.volumeRatio/(std::pow(c.sizeRatio, 3) + c.volumeRatio);
+        EXPECT_LE(std::abs(c.N2 - nStar), 0.5) << "N = " << c.N;
+        const double V1 = (c.N - c.N2)*sphereVolume(a1);
+        const double V2 = c.N2*sphereVolume(a2);
+        auto ratio = [&](double n)
+        {
+            return n*sphereVolume(a2)/((c.N - n)*sphereVolume(a1));
+        };
+        EXPECT_GE(V2/V1, ratio(nStar - 0.5)) << "N = " << c.N;
+        EXPECT_LE(V2/V1, ratio(nStar + 0.5)) << "N = " << c.N;
+        EXPECT_GT(ratio(nStar + 0.5), c.volumeRatio);
+        EXPECT_LT(ratio(nStar - 0.5), c.volumeRatio);
+
+        // the box holds the solid volume at phi
+        const double phi = 0.55;
+        const Vec3 L = boxLengths(radii, phi);
+        EXPECT_NEAR(phi*L.prod(), V1 + V2, 1e-12*(V1 + V2)) << "N = " << c.N;
+    }
+}
+
+
+TEST(SizeDistribution, BidisperseKeepsOneOfEachSpecies)
+{
+    // N2 = round(10 x 1e-6/27/(1 + ...)) = 0 would lose species 2
+    const std::vector<double> few = SizeDistribution::bidisperse(1, 3, 1e-6).radii(10);
+    EXPECT_EQ(count(few, 3.0), 1u);
+    EXPECT_EQ(count(few, 1.0), 9u);
+
+    // N1 = round(10/(1 + 1e6/8)) = 0 would lose species 1
+    const std::vector<double> many = SizeDistribution::bidisperse(1, 2, 1e6).radii(10);
+    EXPECT_EQ(count(many, 1.0), 1u);
+    EXPECT_EQ(count(many, 2.0), 9u);
+
+    const std::vector<double> two = SizeDistribution::bidisperse(1, 1.4, 1).radii(2);
+    EXPECT_EQ(count(two, 1.0), 1u);
+    EXPECT_EQ(count(two, 1.4), 1u);
+}
+
+
+TEST(SizeDistribution, UniformRadiiAtQuantiles)
+{
+    const std::size_t N = 1000;
+    const std::vector<double> radii = SizeDistribution::uniform(0.8, 1.2).radii(N);
+    ASSERT_EQ(radii.size(), N);
+    double mean = 0;
+    double var = 0;
+    for (double a : radii)
+    {
+        EXPECT_GT(a, 0.8);
+        EXPECT_LT(a, 1.2);
+        mean += a/N;
+    }
+    for (double a : radii)
+    {
+        var += (a - mean)*(a - mean)/N;
+    }
+    // midpoints of N equal bins: mean 1, variance 0.4^2/12 (1 - 1/N^2)
+    EXPECT_NEAR(mean, 1.0, 1e-12);
+    EXPECT_NEAR(var, 0.16/12*(1 - 1.0/(N*N)), 1e-12);
+    EXPECT_TRUE(std::is_sorted(radii.begin(), radii.end()));
+}
+
+
+TEST(SizeDistribution, LogNormalMeanAndSd)
+{
+    const std::size_t N = 20000;
+    const double mean = 1.5;
+    const double sd = 0.3;
+    const std::vector<double> radii = SizeDistribution::logNormal(mean, sd).radii(N);
+    ASSERT_EQ(radii.size(), N);
+    double m = 0;
+    double var = 0;
+    for (double a : radii)
+    {
+        m += a/N;
+    }
+    for (double a : radii)
+    {
+        var += (a - m)*(a - m)/N;
+    }
+    EXPECT_TRUE(std::is_sorted(radii.begin(), radii.end()));
+    EXPECT_NEAR(m, mean, 1e-4*mean);
+    EXPECT_NEAR(std::sqrt(var), sd, 1e-2*sd);
+
+    // the median quantile (k + 1/2)/N = 1/2 of an odd sample is exp(mu)
+    const std::vector<double> odd = SizeDistribution::logNormal(mean, sd).radii(101);
+    const double s2 = std::log(1 + (sd/mean)*(sd/mean));
+    EXPECT_NEAR(odd[50], mean*std::exp(-0.5*s2), 1e-12);
+}
+
+
+TEST(SizeDistribution, BoxAspect)
+{
+    const std::vector<double> radii = SizeDistribution::monodisperse(1).radii(50);
+    const Vec3 L = boxLengths(radii, 0.4, Vec3(2, 1, 0.5));
+    EXPECT_NEAR(L.x()/L.y(), 2, 1e-14);
+    EXPECT_NEAR(L.z()/L.y(), 0.5, 1e-14);
+    EXPECT_NEAR(0.4*L.prod(), 50*sphereVolume(1), 1e-12*L.prod());
+}
+
+
+TEST(SizeDistribution, RejectsBadInput)
+{
+    using E = std::invalid_argument;
+    expectThrow<E>([]{ SizeDistribution::monodisperse(0); }, "a = 0");
+    expectThrow<E>([]{ SizeDistribution::monodisperse(NAN); }, "a = nan");
+    expectThrow<E>([]{ SizeDistribution::bidisperse(-1, 1.4, 1); }, "a1 = -1");
+    expectThrow<E>([]{ SizeDistribution::bidisperse(1, 0, 1); }, "sizeRatio (a2/a1) = 0");
+    expectThrow<E>([]{ SizeDistribution::bidisperse(1, 3, -0.25); }, "volumeRatio (V2/V1) = -0.25");
+    expectThrow<E>([]{ SizeDistribution::uniform(0, 1); }, "aMin = 0");
+    expectThrow<E>([]{ SizeDistribution::uniform(1, 0.5); }, "aMax = 0.5");
+    expectThrow<E>([]{ SizeDistribution::logNormal(1, 0); }, "sd = 0");
+    expectThrow<E>([]{ SizeDistribution::monodisperse(1).radii(0); }, "N = 0");
+    expectThrow<E>([]{ SizeDistribution::bidisperse(1, 1.4, 1).radii(1); }, "N = 1");
+
+    const std::vector<double> radii(10, 1.0);
+    expectThrow<E>([&]{ boxLengths(radii, 0); }, "phi = 0");
+    expectThrow<E>([&]{ boxLengths(radii, 0.74); }, "phi = 0.74");
+    expectThrow<E>([&]{ boxLengths(radii, -0.1); }, "(0, 0.74)");
+    expectThrow<E>([&]{ boxLengths(radii, 0.5, Vec3(1, 0, 1)); }, "aspect y = 0");
+    expectThrow<E>([]{ boxLengths({}, 0.5); }, "number of radii = 0");
+    expectThrow<E>([]{ boxLengths({1, -2}, 0.5); }, "radius = -2");
+}
+
+
+// * * * * * * * * * * * * * * * * * Packing  * * * * * * * * * * * * * * * //
+
+namespace
+{
+    RandomPacking::Params params(double phi, std::uint64_t seed = 1)
+    {
+        RandomPacking::Params p;
+        p.phi = phi;
+        p.seed = seed;
+        return p;
+    }
+}
+
+
+TEST(Packing, Table1BidisperseAtPhi060)
+{
+    // a2/a1 = 1.4, V2/V1 = 1, N = 200, phi = 0.6 (paper, table 1)
+    const std::vector<double> radii =
+        SizeDistribution::bidisperse(1, 1.4, 1).radii(200);
+    const RandomPacking packing(params(0.6));
+    const RandomPacking::Result r = packing.pack(radii, 2.5);
+    expectValidPacking(r, radii, 0.6, 2.5, 1e-6);
+    EXPECT_GE(r.statistics.stages, 7u);     // 0.3, 0.35, ..., 0.6
+    EXPECT_GT(r.statistics.iterations, 0u);
+}
+
+
+TEST(Packing, Table3BidisperseAtPhi055)
+{
+    // a2/a1 = 3, V2/V1 = 0.25 (paper, table 3) at N = 1000, phi = 0.55
+    const std::vector<double> radii =
+        SizeDistribution::bidisperse(1, 3, 0.25).radii(1000);
+    const RandomPacking::Result r = RandomPacking(params(0.55)).pack(radii, 1);
+    expectValidPacking(r, radii, 0.55, 1, 1e-6);
+}
+
+
+TEST(Packing, ReproducibleWithSeed)
+{
+    const std::vector<double> radii =
+        SizeDistribution::bidisperse(1, 1.4, 1).radii(200);
+    const RandomPacking::Result a = RandomPacking(params(0.5, 7)).pack(radii, 1);
+    const RandomPacking::Result b = RandomPacking(params(0.5, 7)).pack(radii, 1);
+    const RandomPacking::Result c = RandomPacking(params(0.5, 8)).pack(radii, 1);
+    EXPECT_EQ(a.particles.x, b.particles.x);
+    EXPECT_EQ(a.statistics.iterations, b.statistics.iterations);
+    std::size_t moved = 0;
+    for (std::size_t i = 0; i < radii.size(); ++i)
+    {
+        moved += (a.particles.x[i] - c.particles.x[i]).norm() > 1;
+    }
+    EXPECT_GT(moved, radii.size()/2);
+}
+
+
+TEST(Packing, PolydisperseAspectAndLargeGap)
+{
+    // uniform radii in a 2:1:1 box, gaps of at least 0.05 a_min
+    const std::vector<double> radii = SizeDistribution::uniform(0.8, 1.2).radii(300);
+    RandomPacking::Params p = params(0.5);
+    p.aspect = Vec3(2, 1, 1);
+    p.minGap = 0.05;
+    const RandomPacking::Result r = RandomPacking(p).pack(radii, 1);
+    expectValidPacking(r, radii, 0.5, 1, 0.05*0.8);
+    EXPECT_NEAR(r.box.L().x()/r.box.L().y(), 2, 1e-14);
+
+    // log-normal radii
+    const std::vector<double> logNormal = SizeDistribution::logNormal(1, 0.15).radii(300);
+    const RandomPacking::Result q = RandomPacking(params(0.55)).pack(logNormal, 1);
+    expectValidPacking(q, logNormal, 0.55, 1, 1e-6*logNormal.front());
+}
+
+
+TEST(Packing, JammedTargetReportsPhiReached)
+{
+    // the 1.4 mixture jams near phi = 0.64; 0.70 is out of reach
+    const std::vector<double> radii =
+        SizeDistribution::bidisperse(1, 1.4, 1).radii(200);
+    try
+    {
+        RandomPacking(params(0.70)).pack(radii, 1);
+        FAIL() << "no exception";
+    }
+    catch (const PackingError& e)
+    {
+        EXPECT_GT(e.phiReached(), 0.6);
+        EXPECT_LT(e.phiReached(), 0.70);
+        const std::string what = e.what();
+        EXPECT_NE(what.find("could not pack 200 spheres at phi = 0.7"), std::string::npos) << what;
+        EXPECT_NE(what.find("densest overlap-free stage reached phi = "), std::string::npos) << what;
+    }
+}
+
+
+TEST(Packing, StepLimitReportsPhiReached)
+{
+    const std::vector<double> radii = SizeDistribution::monodisperse(1).radii(200);
+    RandomPacking::Params p = params(0.5);
+    p.maxIterations = 5;
+    try
+    {
+        RandomPacking(p).pack(radii, 1);
+        FAIL() << "no exception";
+    }
+    catch (const PackingError& e)
+    {
+        EXPECT_EQ(e.phiReached(), 0);
+        EXPECT_NE(std::string(e.what()).find("FIRE step limit"), std::string::npos) << e.what();
+    }
+}
+
+
+TEST(Packing, RejectsBadInput)
+{
+    using E = std::invalid_argument;
+    expectThrow<E>([]{ RandomPacking(params(0)); }, "phi = 0");
+    expectThrow<E>([]{ RandomPacking(params(0.8)); }, "phi = 0.8");
+    expectThrow<E>([]{ RandomPacking(RandomPacking::Params()); }, "phi = nan");
+    RandomPacking::Params p = params(0.5);
+    p.minGap = -1;
+    expectThrow<E>([&]{ RandomPacking{p}; }, "minGap = -1");
+    p = params(0.5);
+    p.aspect = Vec3(1, 1, -1);
+    expectThrow<E>([&]{ RandomPacking{p}; }, "aspect z = -1");
+    p = params(0.5);
+    p.maxStageIterations = 0;
+    expectThrow<E>([&]{ RandomPacking{p}; }, "maxStageIterations = 0");
+
+    const RandomPacking packing(params(0.5));
+    const std::vector<double> radii = SizeDistribution::monodisperse(1).radii(200);
+    expectThrow<E>([&]{ packing.pack(radii, 0); }, "rho = 0");
+    expectThrow<E>([&]{ packing.pack({}, 1); }, "number of radii = 0");
+
+    // 20 spheres with a2/a1 = 3: the box is shorter than 3 cut-offs
+    const std::vector<double> few = SizeDistribution::bidisperse(1, 3, 0.25).radii(20);
+    expectThrow<E>([&]{ packing.pack(few, 1); }, "too small");
+}
