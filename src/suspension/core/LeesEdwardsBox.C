@@ -9,10 +9,17 @@ namespace suspension
 
 namespace
 {
+    //- Largest integer <= x (|x| < 2^62), inlined
+    inline long floorInt(double x)
+    {
+        const long t = static_cast<long>(x);
+        return t - (x < t);
+    }
+
     //- x - L floor(x/L), in [0, L)
     double periodic(double x, double L)
     {
-        double y = x - L*std::floor(x/L);
+        double y = x - L*floorInt(x/L);
         return y < L ? y : 0.0;
     }
 }
@@ -48,23 +55,11 @@ void LeesEdwardsBox::setOffset(double delta)
 }
 
 
-int LeesEdwardsBox::minimumImage(Vec3& r) const
-{
-    // Shift x_j by m boxes in y so that |r_y| <= Ly/2, carrying the LE offset
-    const int m = -static_cast<int>(std::lround(r.y()/L_.y()));
-    r.y() += m*L_.y();
-    r.x() += m*offset_;
-    r.x() -= L_.x()*std::round(r.x()/L_.x());
-    r.z() -= L_.z()*std::round(r.z()/L_.z());
-    return m;
-}
-
-
 int LeesEdwardsBox::wrap(Vec3& x, Vec3& u) const
 {
     // eq. (16a,b,d): leaving through the top re-enters at the bottom with
     // x - delta and u_x - gammaDot Ly, and vice versa
-    const int crossings = static_cast<int>(std::floor(x.y()/L_.y()));
+    const int crossings = static_cast<int>(floorInt(x.y()/L_.y()));
     if (crossings != 0)
     {
         x.y() -= crossings*L_.y();
