@@ -1,0 +1,74 @@
+/*---------------------------------------------------------------------------*\
+Application
+    wavyShearFoam
+
+Group
+    grpLagrangianSolvers
+
+Description
+    Rheology of a dense non-Brownian suspension of rigid spheres in an
+    imposed uniform or wavy shear flow (Monti, Rathee, Shen & Rosti 2021):
+    Newton-Euler dynamics with Stokes drag and Faxen terms, lubrication,
+    frictional contact, electrostatic repulsion and van der Waals
+    attraction, in a Lees-Edwards box.
+
+    Set-up: constant/suspensionProperties (see suspensionProperties.H). The
+    mesh spans the particle box; it carries the Eulerian output only.
+    Units are reduced (a0 = eta0 = gammaDot = 1): time is strain.
+
+    The OpenFOAM time step deltaT is the sampling interval: each time step
+    advances the particles by deltaT in as many equal engine steps as the
+    stability limit needs. The run starts from the suspension stored at the
+    start time (startFrom latestTime continues a run bitwise, for the same
+    number of threads), or from a new random packing of the population if
+    the start time holds none.
+
+    Output: postProcessing/rheology/<startTime>/rheology.dat; at write
+    times the cloud lagrangian/suspension (with positions for ParaView), the
+    contact history, uniform/suspensionState, the fields Uinf, gradUinf,
+    shearRateInf, particleStress, alpha and
+    postProcessing/profiles/<time>/profiles.dat.
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "suspensionCloud.H"
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Rheology of a dense suspension of rigid spheres in a uniform or"
+        " wavy shear flow (Monti et al. 2021)"
+    );
+    argList::noParallel();
+
+    #include "setRootCase.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+    #include "createFields.H"
+
+    // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+    Info<< "\nStarting time loop\n" << endl;
+
+    while (runTime.run())
+    {
+        ++runTime;
+
+        particles.evolve();
+
+        runTime.write();
+    }
+
+    runTime.printExecutionTime(Info);
+
+    Info<< "End\n" << endl;
+
+    return 0;
+}
+
+
+// ************************************************************************* //

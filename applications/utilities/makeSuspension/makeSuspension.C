@@ -1,0 +1,84 @@
+/*---------------------------------------------------------------------------*\
+Application
+    makeSuspension
+
+Group
+    grpPreProcessingUtilities
+
+Description
+    Sets up the particles of a wavyShearFoam case from the population of
+    constant/suspensionProperties:
+
+    - writes the particle box to constant/particleBox (entries Lx, Ly, Lz),
+      which blockMeshDict includes so that the mesh spans the box;
+    - unless -boxOnly, packs the population at random without overlaps
+      and writes it as the suspension of the start time (cloud, contact
+      history, state and fields), ready for the solver and ParaView.
+
+    Typical sequence: makeSuspension -boxOnly; blockMesh; makeSuspension.
+    The solver packs a new suspension itself when the start time holds
+    none; makeSuspension makes the initial state visible beforehand.
+
+Usage
+    \b makeSuspension [OPTION]
+
+    Options:
+      - \par -boxOnly
+        Write constant/particleBox only (no mesh needed)
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "suspensionCloud.H"
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Write the particle box and a random packing of the population of"
+        " constant/suspensionProperties at the start time"
+    );
+    argList::noParallel();
+    argList::addBoolOption
+    (
+        "boxOnly",
+        "Write constant/particleBox only (before blockMesh)"
+    );
+
+    #include "setRootCase.H"
+    #include "createTime.H"
+
+    {
+        const suspensionProperties properties(runTime);
+        const vector& box = properties.population().box();
+        suspensionIO::writeBox(runTime, box);
+        Info<< "Particle box " << box << " written to "
+            << runTime.constant()/"particleBox" << nl << endl;
+    }
+
+    if (!args.found("boxOnly"))
+    {
+        if (suspensionIO::found(runTime))
+        {
+            FatalErrorInFunction
+                << "Time " << runTime.timeName() << " already holds a"
+                << " suspension: remove " << runTime.timeName()
+                << "/lagrangian and " << runTime.timeName()
+                << "/uniform to pack a new one" << exit(FatalError);
+        }
+
+        #include "createMesh.H"
+
+        // Packs the population and writes it at the start time
+        const suspensionCloud particles(runTime, mesh);
+    }
+
+    Info<< "End\n" << endl;
+
+    return 0;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,246 @@
+/*---------------------------------------------------------------------------*\
+Application
+    suspensionBenchmark
+
+Description
+    Times the engine on the paper's suspensions and prints one CSV row
+    (header with -header): neighbour-search rebuild times for the half and
+    full stencils and brute force, time per full explicit step, ns per
+    particle-step, peak resident memory, and the bytes per particle of the
+    pair list with contact history next to the paper's N x M table.
+
+    Cases (paper tables, all in reduced units a0 = eta0 = gammaDot = 1):
+      table3  bidisperse a2/a1 = 3, V2/V1 = 0.25, phi = 0.5; St = 1e-3,
+              k = 4e5, kt/kn = 2/7, gamma_n/kn = 1e-7, mu_C = 1, rolling
+              kr/kn = 0.1, gammaDot/gammaDot0 = 1, delta_lub = 0.25,
+              lambda_D = 0.02, F^R/F^A = 19: every force on
+      table1  bidisperse a2/a1 = 1.4, V2/V1 = 1, phi = 0.5, mu_C = 1,
+              delta_lub = 0.05: lubrication and frictional contact
+
+Usage
+    suspensionBenchmark [-case table3|table1] [-N 4096] [-steps 20]
+        [-phi 0.5] [-attractionCutoff 4] [-brute] [-header] [-seed 1]
+
+    Threads: OMP_NUM_THREADS. The particles start from a random
+    non-overlapping packing; a few steps are taken before timing.
+\*---------------------------------------------------------------------------*/
+
+#include "dynamics/Simulation.H"
+#include "flow/ShearFlow.H"
+#include "forces/ElectroChemicalScales.H"
+#include "packing/RandomPacking.H"
+#include "packing/SizeDistribution.H"
+
+#include <omp.h>
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+#include <string>
+
+using namespace suspension;
+
+namespace
+{
+    using Clock = std::chrono::steady_clock;
+
+    double seconds(Clock::time_point a, Clock::time_point b)
+    {
+        return std::chrono::duration<double>(b - a).count();
+    }
+
+    //- Median wall time of `repeats` calls of f
+    template<class F>
+    double medianTime(int repeats, F f)
+    {
+        std::vector<double> t;
+        for (int r = 0; r < repeats; ++r)
+        {
+            const auto t0 = Clock::now();
+            f();
+            t.push_back(seconds(t0, Clock::now()));
+        }
+        std::sort(t.begin(), t.end());
+        return t[t.size()/2];
+    }
+
+    double peakRSSMB()
+    {
+        rusage u;
+        getrusage(RUSAGE_SELF, &u);
+        return u.ru_maxrss/1024.0;
+    }
+
+    struct Options
+    {
+        std::string caseName = "table3";
+        std::size_t N = 4096;
+        int steps = 20;
+        double phi = 0.5;
+        double attractionCutoff = 4;
+        bool brute = false;
+        bool header = false;
+        std::uint64_t seed = 1;
+    };
+
+    Options parse(int argc, char** argv)
+    {
+        Options o;
+        for (int k = 1; k < argc; ++k)
+        {
+            const std::string a = argv[k];
+            auto value = [&]() -> std::string
+            {
+                if (k + 1 >= argc)
+                {
+                    std::cerr << "suspensionBenchmark: " << a << " needs a value\n";
+                    std::exit(2);
+                }
+                return argv[++k];
+            };
+            if (a == "-case") o.caseName = value();
+            else if (a == "-N") o.N = std::stoul(value());
+            else if (a == "-steps") o.steps = std::stoi(value());
+            else if (a == "-phi") o.phi = std::stod(value());
+            else if (a == "-attractionCutoff") o.attractionCutoff = std::stod(value());
+            else if (a == "-seed") o.seed = std::stoull(value());
+            else if (a == "-brute") o.brute = true;
+            else if (a == "-header") o.header = true;
+            else
+            {
+                std::cerr << "suspensionBenchmark: unknown option " << a << "\n";
+                std::exit(2);
+            }
+        }
+        if (o.caseName != "table3" && o.caseName != "table1")
+        {
+            std::cerr << "suspensionBenchmark: -case must be table3 or table1\n";
+            std::exit(2);
+        }
+        return o;
+    }
+
+    ForceModels models(const Options& o)
+    {
+        const bool t3 = o.caseName == "table3";
+        ForceModels m;
+        Lubrication::Params lub;
+        lub.epsilon = 1e-3;
+        lub.deltaLub = t3 ? 0.25 : 0.05;
+        m.lubrication.emplace(lub);
+        FrictionalContact::Params c =
+            FrictionalContact::fromGroups(4e5, 2.0/7.0, 1e-7, 1.0);
+        if (t3)
+        {
+            c.kr = 0.1*c.kn;
+        }
+        m.contact.emplace(c);
+        if (t3)
+        {
+            const ElectroChemicalScales scales({1.0, 19.0, 0.01});
+            m.repulsion.emplace(scales.repulsion(0.02));
+            VanDerWaalsAttraction::Params att = scales.attraction();
+            att.cutoffGap = o.attractionCutoff;
+            m.attraction.emplace(att);
+        }
+        return m;
+    }
+}
+
+
+int main(int argc, char** argv)
+{
+    const Options o = parse(argc, argv);
+    const bool t3 = o.caseName == "table3";
+    const double rho = 1e-3;
+
+    if (o.header)
+    {
+        std::cout
+            << "case,N,threads,phi,attractionCutoff,pairs_per_particle,"
+               "contacts_per_particle,build_half_ms,build_full_ms,build_brute_ms,"
+               "step_ms,ns_per_particle_step,dt,dt_limit,list_bytes_per_particle,"
+               "paper_NxM_bytes_per_particle,pack_s,peak_rss_MB\n";
+        return 0;
+    }
+
+    // Initial configuration
+    const SizeDistribution dist = t3
+        ? SizeDistribution::bidisperse(1.0, 3.0, 0.25)
+        : SizeDistribution::bidisperse(1.0, 1.4, 1.0);
+    const std::vector<double> radii = dist.radii(o.N);
+    RandomPacking::Params pp;
+    pp.phi = o.phi;
+    pp.seed = o.seed;
+    const auto tp = Clock::now();
+    RandomPacking::Result packed = RandomPacking(pp).pack(radii, rho);
+    const double packSeconds = seconds(tp, Clock::now());
+
+    const ShearFlow flow(1.0);
+    LeesEdwardsBox box(packed.box.L(), 1.0);
+    Simulation::Params sp;
+    sp.rho = rho;
+    Simulation sim(packed.particles, box, flow, models(o), sp);
+    sim.start(0);
+    const double dt = sim.deltaT();
+    for (int s = 0; s < 5; ++s)
+    {
+        sim.step(dt);
+    }
+
+    // Neighbour-search rebuilds: sort, find pairs, carry history
+    auto buildTime = [&](Stencil stencil)
+    {
+        Particles p = sim.particles();
+        PairList list = sim.pairs();
+        NeighbourSearch search({sim.search().params().gap, sim.search().params().skin, stencil});
+        return medianTime(stencil == Stencil::bruteForce ? 1 : 5, [&]()
+        {
+            search.rebuild(p, sim.box(), list);
+        });
+    };
+    const double tHalf = buildTime(Stencil::half);
+    const double tFull = buildTime(Stencil::full);
+    const double tBrute = o.brute ? buildTime(Stencil::bruteForce) : NAN;
+
+    // Full explicit steps
+    std::vector<double> stepTimes;
+    for (int s = 0; s < o.steps; ++s)
+    {
+        const auto t0 = Clock::now();
+        sim.step(dt);
+        stepTimes.push_back(seconds(t0, Clock::now()));
+    }
+    std::sort(stepTimes.begin(), stepTimes.end());
+    const double tStep = stepTimes[stepTimes.size()/2];
+
+    // Memory: the list with history, and the paper's N x M table where M
+    // is the number of smallest spheres in a shell 2 a0 thick around the
+    // largest, each entry a partner index and a stretch (4 + 48 bytes)
+    const std::size_t N = sim.particles().size();
+    const double aMin = radii.front();
+    const double aMax = radii.back();
+    const double M = std::ceil
+    (
+        (std::pow(aMax + 2, 3) - std::pow(aMax, 3))/std::pow(aMin, 3)
+    );
+    const double listBytes =
+        double(sim.pairs().bytes() + sim.search().bytes())/N;
+
+    std::printf
+    (
+        "%s,%zu,%d,%.4f,%g,%.3f,%.3f,%.3f,%.3f,%.3f,%.4f,%.1f,%.4g,%s,%.1f,%.1f,%.2f,%.1f\n",
+        o.caseName.c_str(), N, omp_get_max_threads(),
+        solidVolume(radii)/sim.box().volume(), t3 ? o.attractionCutoff : 0.0,
+        double(sim.pairs().nPairs())/N,
+        double(sim.summary().nContacts)/N,
+        1e3*tHalf, 1e3*tFull, 1e3*tBrute,
+        1e3*tStep, 1e9*tStep/N, dt, sim.limits().binding().name.c_str(),
+        listBytes, M*(4 + sizeof(ContactState)), packSeconds, peakRSSMB()
+    );
+    return 0;
+}

@@ -1,0 +1,384 @@
+#include "suspensionCloud.H"
+#include "inputChecks.H"
+#include "particleFields.H"
+#include "boundBox.H"
+
+#include <omp.h>
+
+#include <cmath>
+#include <cstdio>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- Seconds as h:mm:ss
+std::string clockTime(const double seconds)
+{
+    const long s = std::lround(seconds);
+    char buf[32];
+    std::snprintf
+    (
+        buf, sizeof(buf), "%ld:%02ld:%02ld", s/3600, (s/60) % 60, s % 60
+    );
+    return buf;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::suspensionIO::state Foam::suspensionCloud::initialState() const
+{
+    if (restart_)
+    {
+        return suspensionIO::readState(runTime_);
+    }
+
+    const suspensionPopulation& population = properties_.population();
+    suspensionIO::state s;
+    s.time = runTime_.value();
+    s.steps = 0;
+    s.nParticles = population.nParticles();
+    s.nContacts = 0;
+    s.box = population.box();
+    s.offset = 0;
+    s.file = population.dict().name();
+    return s;
+}
+
+
+void Foam::suspensionCloud::checkSetup(const scalar aMax) const
+{
+    const vector& L = start_.box;
+    const scalar tol = 1e-5*cmptMax(L);
+
+    // The groups of suspensionProperties are reduced with gammaDot = 1
+    if (flow_->shearRate() != 1)
+    {
+        FatalIOErrorInFunction(properties_.ambientFlowDict())
+            << "The mean shear rate (entry 'shearRate') of the ambient flow"
+            << " is " << flow_->shearRate() << "; " << properties_.name()
+            << " is in reduced units a0 = eta0 = gammaDot = 1, so it must be"
+            << " 1 (electroChemical/shearRateRatio sets gammaDot/gammaDot0)"
+            << nl << exit(FatalIOError);
+    }
+
+    if (restart_)
+    {
+        const suspensionPopulation& population = properties_.population();
+        if
+        (
+            start_.nParticles != population.nParticles()
+         || mag(start_.box - population.box()) > tol
+        )
+        {
+            FatalIOErrorInFunction(population.dict())
+                << "The suspension stored in " << start_.file << " (N = "
+                << start_.nParticles << ", box " << start_.box
+                << ") was not made from this population (N = "
+                << population.nParticles() << ", box " << population.box()
+                << "): restore the population, or remove the stored time"
+                << " directories to start a new packing" << nl
+                << exit(FatalIOError);
+        }
+
+        suspension::LeesEdwardsBox box(toEigen(L), flow_->shearRate());
+        box.setTime(start_.time);
+        if (mag(box.offset() - start_.offset) > tol)
+        {
+            FatalIOErrorInFunction(start_.file)
+                << "Entry 'offset' = " << start_.offset << " in "
+                << start_.file << " is not the Lees-Edwards offset "
+                << box.offset() << " of time " << start_.time << nl
+                << exit(FatalIOError);
+        }
+    }
+
+    const boundBox& bb = mesh_.bounds();
+    if (mag(bb.min()) > tol || mag(bb.max() - L) > tol)
+    {
+        FatalIOErrorInFunction(start_.file)
+            << "The mesh bounds " << bb << " are not the particle box"
+            << " [(0 0 0), " << L << "] of " << start_.file << nl
+            << "    Make blockMeshDict span the box (makeSuspension -boxOnly"
+            << " writes it to constant/particleBox) and run blockMesh" << nl
+            << exit(FatalIOError);
+    }
+
+    const scalar R = properties_.neighbourCutoff(aMax);
+    if (cmptMin(L) < 3*R)
+    {
+        FatalIOErrorInFunction(properties_)
+            << "The box " << L << " is smaller than 3 neighbour cut-offs,"
+            << " 3 R = " << 3*R << " (R = 2 a_max + interaction gap + skin = "
+            << R << ")" << nl
+            << "    Raise population/nParticles, or shorten the interaction"
+            << " ranges (lubrication/delta, electroChemical cutoffs,"
+            << " integration/skin)" << nl
+            << exit(FatalIOError);
+    }
+}
+
+
+void Foam::suspensionCloud::start(const scalar t, const bool forcesGiven)
+{
+    try
+    {
+        sim_->start(t, forcesGiven);
+    }
+    catch (const std::invalid_argument& err)
+    {
+        raiseEngineError(properties_, err);
+    }
+    catch (const suspension::SimulationError& err)
+    {
+        FatalErrorInFunction
+            << "The suspension cannot start at time " << runTime_.timeName()
+            << ": " << err.what() << nl << exit(FatalError);
+    }
+}
+
+
+void Foam::suspensionCloud::writeState(suspension::Simulation& sim) const
+{
+    std::vector<suspension::Mat3> S;
+    sim.particleStresslets(S);
+    const labelList cells = suspensionIO::findCells(mesh_, sim.particles());
+
+    suspensionIO::write(mesh_, sim, steps(sim), S, cells);
+    writeParticleFields(mesh_, sim.particles(), S, cells);
+    profiles_.write
+    (
+        sim.particles(), S, *flow_, sim.models().drag.params().eta
+    );
+    flow_->writeFields(mesh_);
+}
+
+
+void Foam::suspensionCloud::write()
+{
+    writeState(*sim_);
+
+    // A run restarted from this time starts by re-sorting the particles and
+    // rebuilding the neighbour list; so does this one, so that both continue
+    // from the same state in the same order
+    start(sim_->time(), true);
+}
+
+
+void Foam::suspensionCloud::failed(const suspension::SimulationError& err)
+{
+    runTime_.setTime(lastGoodTime_, lastGoodIndex_);
+    writeState(*lastGood_);
+    runTime_.writeNow();
+
+    FatalErrorInFunction
+        << err.what() << nl
+        << "    The last good state (time " << runTime_.timeName()
+        << ", strain " << lastGood_->time() << ", step "
+        << steps(*lastGood_) << ") is written to " << runTime_.timePath()
+        << nl << "    To continue from it, lower integration/deltaT or"
+        << " safety, or raise contact/stiffness" << nl
+        << exit(FatalError);
+
+    // FatalError has thrown (throwExceptions) or exited
+    std::abort();
+}
+
+
+void Foam::suspensionCloud::reportStart() const
+{
+    const suspension::Simulation& sim = *sim_;
+    const suspension::TimeStepLimits& limits = sim.limits();
+    const scalar R = properties_.neighbourCutoff(sim.particles().maxRadius());
+    const scalar userDeltaT = properties_.simulationParams().deltaT;
+
+    properties_.report(Info);
+
+    Info<< "    start        ";
+    if (restart_)
+    {
+        Info<< "stored suspension of " << start_.file << " (strain "
+            << start_.time << ", " << start_.steps << " steps, "
+            << start_.nContacts << " contacts with history)" << nl;
+    }
+    else
+    {
+        Info<< "new random packing, seed "
+            << properties_.population().dict().get<label>("seed") << nl;
+    }
+    Info<< "    neighbours   cut-off R = 2 a_max + gap + skin = " << R
+        << ", box = " << start_.box/R << " R" << nl
+        << "    time step    dt = " << sim.deltaT() << " ("
+        << (userDeltaT > 0 ? "integration/deltaT" : "auto")
+        << "); binding limit " << limits.binding().name.c_str() << " = "
+        << limits.binding().value << ", safety " << limits.safety() << nl
+        << "    limits      ";
+    for (const suspension::TimeStepLimit& l : limits.all())
+    {
+        Info<< ' ' << l.name.c_str() << ' ' << l.value;
+    }
+    Info<< nl
+        << "    outer step   " << runTime_.deltaTValue() << " = "
+        << std::ceil(runTime_.deltaTValue()/sim.deltaT()) << " steps" << nl
+        << "    threads      " << omp_get_max_threads() << nl << endl;
+
+    if (userDeltaT > limits.binding().value)
+    {
+        WarningInFunction
+            << "integration/deltaT = " << userDeltaT << " exceeds the"
+            << " stability limit " << limits.binding().name.c_str() << " = "
+            << limits.binding().value << nl << endl;
+    }
+}
+
+
+void Foam::suspensionCloud::reportProgress()
+{
+    const suspension::Simulation& sim = *sim_;
+    const scalar etaR = sim.rheology().etaR;
+    etaRSum_ += etaR;
+    ++etaRSamples_;
+
+    const clock::time_point now = clock::now();
+    const double sinceReport =
+        std::chrono::duration<double>(now - reported_).count();
+    const bool last =
+        runTime_.value()
+      > runTime_.endTime().value() - 0.5*runTime_.deltaTValue();
+    if (sinceReport < 5 && !last)
+    {
+        return;
+    }
+
+    const double elapsed =
+        std::chrono::duration<double>(now - started_).count();
+    const scalar done = runTime_.value() - start_.time;
+    const scalar toGo = runTime_.endTime().value() - runTime_.value();
+
+    Info<< "strain " << sim.time()
+        << "  etaR " << etaR << " (mean " << etaRSum_/etaRSamples_ << ")  "
+        << label((sim.steps() - reportedSteps_)/sinceReport) << " steps/s"
+        << "  ETA " << clockTime(max(toGo, 0)*elapsed/done).c_str() << endl;
+
+    reported_ = now;
+    reportedSteps_ = sim.steps();
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::suspensionCloud::suspensionCloud(Time& runTime, const fvMesh& mesh)
+:
+    runTime_(runTime),
+    mesh_(mesh),
+    properties_(mesh),
+    restart_(suspensionIO::found(runTime)),
+    start_(initialState()),
+    flow_(ambientFlow::New(properties_.ambientFlowDict(), start_.box)),
+    engineFlow_(*flow_),
+    sim_(),
+    lastGood_(),
+    lastGoodTime_(runTime.value()),
+    lastGoodIndex_(runTime.timeIndex()),
+    rheology_(),
+    profiles_(mesh, properties_.profileBins()),
+    started_(clock::now()),
+    reported_(started_),
+    reportedSteps_(0),
+    etaRSum_(0),
+    etaRSamples_(0)
+{
+    const suspensionPopulation& population = properties_.population();
+    const scalar rho = properties_.simulationParams().rho;
+
+    // Everything is checked before the (possibly long) packing
+    suspension::Particles particles;
+    if (restart_)
+    {
+        particles = suspensionIO::readParticles(mesh_, start_, rho);
+        checkSetup(particles.maxRadius());
+    }
+    else
+    {
+        checkSetup(population.radii().back());
+        particles = population.pack(rho);
+    }
+
+    try
+    {
+        sim_.emplace
+        (
+            std::move(particles),
+            suspension::LeesEdwardsBox(toEigen(start_.box), flow_->shearRate()),
+            engineFlow_,
+            properties_.models(),
+            properties_.simulationParams()
+        );
+    }
+    catch (const std::invalid_argument& err)
+    {
+        raiseEngineError(properties_, err);
+    }
+    if (restart_)
+    {
+        sim_->pairs() =
+            suspensionIO::readContacts(mesh_, start_, sim_->particles());
+    }
+    start(start_.time, restart_);
+
+    reportStart();
+
+    if (!restart_)
+    {
+        write();
+    }
+    lastGood_.emplace(*sim_);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::suspensionCloud::evolve()
+{
+    const std::uint64_t before = sim_->steps();
+    try
+    {
+        sim_->advance(runTime_.deltaTValue());
+    }
+    catch (const suspension::SimulationError& err)
+    {
+        failed(err);
+    }
+
+    if (runTime_.timeIndex() % properties_.rheologyInterval() == 0)
+    {
+        if (!rheology_)
+        {
+            rheology_.emplace(mesh_);
+        }
+        rheology_->write
+        (
+            *sim_,
+            steps(*sim_),
+            runTime_.deltaTValue()/(sim_->steps() - before)
+        );
+    }
+    if (runTime_.writeTime())
+    {
+        write();
+    }
+
+    lastGood_.reset();
+    lastGood_.emplace(*sim_);
+    lastGoodTime_ = runTime_.value();
+    lastGoodIndex_ = runTime_.timeIndex();
+
+    reportProgress();
+}
+
+
+// ************************************************************************* //
