@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+#------------------------------------------------------------------------------
+# A real viewer: run the tiny case of tests/suspensionFoam, open it with
+# ParaView's OpenFOAM reader (pvpython under xvfb-run) and render the
+# particles. viewerTest.sh <binDir> <WM_PROJECT_DIR> [png]
+#------------------------------------------------------------------------------
+set -euo pipefail
+binDir=$1
+export WM_PROJECT_DIR=$2
+here=$(cd "$(dirname "$0")" && pwd)
+export PATH="$binDir:$PATH" OMP_NUM_THREADS=1 OMP_WAIT_POLICY=PASSIVE
+
+for tool in pvpython xvfb-run; do
+    command -v "$tool" > /dev/null || { echo "viewerTest: $tool not installed (etc/bootstrap --viewer)" >&2; exit 1; }
+done
+
+work=$(mktemp -d "${TMPDIR:-/tmp}/viewerTest.XXXXXX")
+trap 'rm -rf "$work"' EXIT
+cp -r "$here/../suspensionFoam/tiny" "$work/case"
+cd "$work/case"
+makeSuspension -boxOnly > log.makeBox 2>&1
+blockMesh > log.blockMesh 2>&1
+wavyShearFoam > log.wavyShearFoam 2>&1 || { tail -30 log.wavyShearFoam; exit 1; }
+N=$(foamDictionary -entry population/nParticles -value constant/suspensionProperties)
+png=${3:-$work/viewer.png}
+xvfb-run -a -s "-screen 0 1280x1024x24" pvpython "$here/viewerTest.py" "$work/case" "$N" "$png"
