@@ -226,12 +226,15 @@ void Foam::suspensionCloud::reportStart() const
         << std::ceil(runTime_.deltaTValue()/sim.deltaT()) << " steps" << nl
         << "    threads      " << omp_get_max_threads() << nl << endl;
 
-    if (userDeltaT > limits.binding().value)
+    if (userDeltaT > limits.deltaT())
     {
         WarningInFunction
-            << "integration/deltaT = " << userDeltaT << " exceeds the"
-            << " stability limit " << limits.binding().name.c_str() << " = "
-            << limits.binding().value << nl << endl;
+            << "integration/deltaT = " << userDeltaT << " is larger than the"
+            << " automatic step " << limits.deltaT() << " (safety "
+            << limits.safety() << " x the " << limits.binding().name.c_str()
+            << " stability limit " << limits.binding().value << ")"
+            << (userDeltaT > limits.binding().value ? ": the run is unstable" : "")
+            << nl << endl;
     }
 }
 
