@@ -56,7 +56,8 @@ namespace
     }
 
     //- Sum of f(i) over [0, N) starting from zero: one partial sum per
-    //  thread over its static chunk, added in thread order
+    //  thread over its static chunk, added in thread order. f(i) may update
+    //  the entries of particle i.
     template<class T, class Term>
     T sum(std::size_t N, const T& zero, const Term& f)
     {
@@ -226,9 +227,12 @@ RandomPacking::Result RandomPacking::pack
         const double x = uniform01(rng);
         const double y = uniform01(rng);
         const double z = uniform01(rng);
+        Vec3 centre = L.cwiseProduct(Vec3(x, y, z));
+        Vec3 still = Vec3::Zero();
+        box.wrap(centre, still);    // (1 - 2^-53) L may round up to L
         p.add
         (
-            L.cwiseProduct(Vec3(x, y, z)),
+            centre,
             radii[i],
             unitMassDensity,
             static_cast<std::int64_t>(i)
@@ -241,12 +245,14 @@ RandomPacking::Result RandomPacking::pack
     std::vector<std::vector<Vec3>> threadF(omp_get_max_threads());
     Statistics stats;
 
-    // Position update with path accounting for the Verlet criterion
-    auto move = [&](double dt)
+    // FIRE velocity mixing u <- keep u + mix F, then the move x += dt u,
+    // with the path accounting of the Verlet criterion
+    auto mixAndMove = [&](double keep, double mix, double dt)
     {
         #pragma omp parallel for schedule(static) if(N >= searchParallelMin)
         for (std::size_t i = 0; i < N; ++i)
         {
+            p.u[i] = keep*p.u[i] + mix*p.F[i];
             p.x[i] += dt*p.u[i];
             box.wrap(p.x[i], p.u[i]);
         }
@@ -273,9 +279,20 @@ RandomPacking::Result RandomPacking::pack
             }
             ++stats.iterations;
 
-            const double power =
-                sum(N, 0.0, [&](std::size_t i){ return p.F[i].dot(p.u[i]); });
-            if (power > 0)
+            // power F.u and |F|^2
+            const Eigen::Vector2d PF = sum
+            (
+                N, Eigen::Vector2d::Zero().eval(),
+                [&](std::size_t i)
+                {
+                    return Eigen::Vector2d(p.F[i].dot(p.u[i]), p.F[i].squaredNorm());
+                }
+            );
+            if (PF.y() < N*jammedForce*jammedForce*aMin*aMin)
+            {
+                return Stage::jammed;
+            }
+            if (PF.x() > 0)
             {
                 if (++nPositive > nDelay)
                 {
@@ -291,42 +308,22 @@ RandomPacking::Result RandomPacking::pack
                     dt *= fDec;
                     alpha = alphaStart;
                 }
-                // half a step back: reverse, move, stop
-                for (Vec3& u : p.u)
-                {
-                    u = -u;
-                }
-                move(0.5*dt);
+                // half a step back (reversed velocities), then stop
+                mixAndMove(-1, 0, 0.5*dt);
                 std::fill(p.u.begin(), p.u.end(), Vec3::Zero());
             }
 
-            #pragma omp parallel for schedule(static) if(N >= searchParallelMin)
-            for (std::size_t i = 0; i < N; ++i)
-            {
-                p.u[i] += dt/p.m[i]*p.F[i];
-            }
-            const Eigen::Vector2d norms = sum
+            // u += dt F/m, summing |u|^2
+            const double u2 = sum
             (
-                N, Eigen::Vector2d::Zero().eval(),
+                N, 0.0,
                 [&](std::size_t i)
                 {
-                    return Eigen::Vector2d(p.u[i].squaredNorm(), p.F[i].squaredNorm());
+                    p.u[i] += dt/p.m[i]*p.F[i];
+                    return p.u[i].squaredNorm();
                 }
             );
-            if (norms.y() < N*jammedForce*jammedForce*aMin*aMin)
-            {
-                return Stage::jammed;
-            }
-            if (norms.y() > 0)
-            {
-                const double mix = alpha*std::sqrt(norms.x()/norms.y());
-                #pragma omp parallel for schedule(static) if(N >= searchParallelMin)
-                for (std::size_t i = 0; i < N; ++i)
-                {
-                    p.u[i] = (1 - alpha)*p.u[i] + mix*p.F[i];
-                }
-            }
-            move(dt);
+            mixAndMove(1 - alpha, alpha*std::sqrt(u2/PF.y()), dt);
         }
         return Stage::unfinished;
     };
