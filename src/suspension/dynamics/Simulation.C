@@ -22,7 +22,10 @@ namespace
             throw std::invalid_argument("Simulation: no particles");
         }
         const auto [aMin, aMax] = std::minmax_element(p.a.begin(), p.a.end());
-        return TimeStepLimits(models, *aMin, *aMax, params.rho, params.safety);
+        return TimeStepLimits
+        (
+            models, *aMin, *aMax, params.rho, params.safety, params.integrator
+        );
     }
 }
 
@@ -49,27 +52,62 @@ Simulation::Simulation
     }),
     limits_(makeLimits(forces_.models(), particles_, params)),
     dtMax_(params.deltaT > 0 ? params.deltaT : limits_.deltaT()),
+    aMin_(*std::min_element(particles_.a.begin(), particles_.a.end())),
     time_(0),
     steps_(0)
 {
-    if (!(params.skin >= 0) || !(params.maxOverlap > 0))
+    if
+    (
+        !(params.skin >= 0) || !(params.maxOverlap > 0)
+     || !(params.maxDisplacement >= 0)
+    )
     {
         throw std::invalid_argument
         (
-            "Simulation: need skin >= 0 and maxOverlap > 0; got skin "
-          + std::to_string(params.skin) + ", maxOverlap "
-          + std::to_string(params.maxOverlap)
+            "Simulation: need skin >= 0, maxOverlap > 0 and maxDisplacement"
+            " >= 0; got skin " + std::to_string(params.skin)
+          + ", maxOverlap " + std::to_string(params.maxOverlap)
+          + ", maxDisplacement " + std::to_string(params.maxDisplacement)
+        );
+    }
+    if (!std::isfinite(dtMax_) && params.maxDisplacement == 0)
+    {
+        throw std::invalid_argument
+        (
+            "Simulation: no force limits the step of the implicit integrator;"
+            " set deltaT or maxDisplacement"
+        );
+    }
+    if (params.integrator != Integrator::velocityVerlet)
+    {
+        implicit_.emplace
+        (
+            forces_.models(),
+            params.integrator == Integrator::implicitEuler,
+            params.solver
         );
     }
 }
 
 
-void Simulation::evaluateForces(double dt, std::vector<Mat3>* particleStresslet)
+void Simulation::evaluateForces(double dt)
 {
-    summary_ = forces_.compute
-    (
-        particles_, box_, flow_, pairs_, dt, particleStresslet
-    );
+    if (implicit_)
+    {
+        summary_ = forces_.compute
+        (
+            particles_, box_, flow_, pairs_, dt, nullptr,
+            ForceField::Forces::nonHydrodynamic
+        );
+        implicit_->evaluate
+        (
+            particles_, box_, forces_.ambient(), pairs_, summary_
+        );
+    }
+    else
+    {
+        summary_ = forces_.compute(particles_, box_, flow_, pairs_, dt);
+    }
 }
 
 
@@ -80,7 +118,7 @@ void Simulation::start(double t, bool forcesGiven)
     search_.rebuild(particles_, box_, pairs_);
     if (!forcesGiven)
     {
-        evaluateForces(0, nullptr);
+        evaluateForces(0);
     }
     else
     {
@@ -88,7 +126,7 @@ void Simulation::start(double t, bool forcesGiven)
         std::vector<Vec3> F = particles_.F;
         std::vector<Vec3> T = particles_.T;
         PairList frozen = pairs_;
-        evaluateForces(0, nullptr);
+        evaluateForces(0);
         pairs_ = std::move(frozen);
         particles_.F = std::move(F);
         particles_.T = std::move(T);
@@ -106,13 +144,27 @@ void Simulation::step(double dt)
     {
         Uinf_[i] = ambient[i].U;
     }
+    if (implicit_)
+    {
+        implicit_->solve(particles_, ambient, dt);  // u^(n+1) at x^n
+    }
     search_.accumulate(particles_, Uinf_, dt);
 
     box_.setTime(time_ + dt);
-    VelocityVerlet::predict(particles_, box_, dt);
+    if (implicit_)
+    {
+        ImplicitEuler::move(particles_, box_, dt);
+    }
+    else
+    {
+        VelocityVerlet::predict(particles_, box_, dt);
+    }
     search_.update(particles_, box_, pairs_, flow_.maxVelocityGradient());
-    evaluateForces(dt, nullptr);
-    VelocityVerlet::correct(particles_, dt);
+    evaluateForces(dt);
+    if (!implicit_)
+    {
+        VelocityVerlet::correct(particles_, dt);
+    }
 
     time_ += dt;
     ++steps_;
@@ -126,6 +178,22 @@ void Simulation::advance(double interval)
     {
         return;
     }
+    if (params_.maxDisplacement > 0)
+    {
+        const double end = time_ + interval;
+        for (;;)
+        {
+            const double remaining = end - time_;
+            const double n =
+                std::max(1.0, std::ceil(remaining/stepBound()*(1 - 1e-12)));
+            step(remaining/n);
+            if (n == 1)
+            {
+                time_ = end;
+                return;
+            }
+        }
+    }
     const auto n = static_cast<std::uint64_t>(std::ceil(interval/dtMax_*(1 - 1e-12)));
     const double dt = interval/static_cast<double>(n);
     const double t0 = time_;
@@ -134,6 +202,24 @@ void Simulation::advance(double interval)
         step(dt);
         time_ = t0 + k*dt;      // no round-off drift over many steps
     }
+}
+
+
+double Simulation::stepBound() const
+{
+    if (params_.maxDisplacement == 0)
+    {
+        return dtMax_;
+    }
+    const std::vector<FlowSample>& ambient = forces_.ambient();
+    double uMax = 0;
+    for (std::size_t i = 0; i < particles_.size(); ++i)
+    {
+        uMax = std::max(uMax, (particles_.u[i] - ambient[i].U).norm());
+    }
+    return uMax > 0
+        ? std::min(dtMax_, params_.maxDisplacement*aMin_/uMax)
+        : dtMax_;
 }
 
 
@@ -163,6 +249,17 @@ Rheology Simulation::rheology() const
 
 void Simulation::check() const
 {
+    if (implicit_ && !implicit_->statistics().converged)
+    {
+        const ConjugateGradient::Result& cg = implicit_->statistics();
+        std::ostringstream msg;
+        msg << "the implicit velocity solve did not converge at step "
+            << steps_ << " (t = " << time_ << "): |r|/|b| = " << cg.residual
+            << " after " << cg.iterations << " CG iterations (tolerance "
+            << params_.solver.tolerance << ", maxIterations "
+            << params_.solver.maxIterations << ")";
+        throw SimulationError(msg.str());
+    }
     const Particles& p = particles_;
     for (std::size_t i = 0; i < p.size(); ++i)
     {

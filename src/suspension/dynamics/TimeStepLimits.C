@@ -1,9 +1,12 @@
 #include "dynamics/TimeStepLimits.H"
+#include "forces/PairRadii.H"
 
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -57,6 +60,39 @@ namespace
         return 1/lambdaMax;
     }
 
+    //- Largest stable step of a spring k with dashpot gamma (explicit) on
+    //  a coordinate of inertia m with resistance zeta (implicit); see the
+    //  header. zeta = gamma = 0: the explicit spring limit 2 sqrt(m/k).
+    double modeLimit(double k, double gamma, double m, double zeta)
+    {
+        const double c = zeta - gamma;
+        double dt = (c + std::sqrt(c*c + 4*k*m))/k;
+        if (gamma > zeta)
+        {
+            dt = std::min(dt, 2*m/(gamma - zeta));
+        }
+        return dt;
+    }
+
+    //- Inverse effective inertias of the normal, tangential and rolling
+    //  contact modes of a pair, from the translational (t) and rotational
+    //  (r) inertias of its spheres: masses and moments of inertia, or the
+    //  Stokes resistances 6 pi eta a and 8 pi eta a^3
+    std::array<double, 3> contactModes
+    (
+        double ai,
+        double ti,
+        double ri,
+        double aj,
+        double tj,
+        double rj
+    )
+    {
+        const double aij = harmonicRadius(ai, aj);
+        const double normal = 1/ti + 1/tj;
+        return {normal, normal + ai*ai/ri + aj*aj/rj, aij*aij*(1/ri + 1/rj)};
+    }
+
     //- Largest |dF/dh| of a central force over h in [0, hMax], sampled
     template<class Model>
     double sampledStiffness(const Model& model, double ai, double aj, double hMax)
@@ -88,7 +124,8 @@ TimeStepLimits::TimeStepLimits
     double aMin,
     double aMax,
     double rho,
-    double safety
+    double safety,
+    Integrator integrator
 )
 :
     safety_(safety)
@@ -103,20 +140,51 @@ TimeStepLimits::TimeStepLimits
         );
     }
 
+    const bool explicitHydrodynamics = integrator == Integrator::velocityVerlet;
+    const bool inertia = integrator != Integrator::overdamped;
     const double eta = models.drag.params().eta;
     const double mMin = sphereMass(aMin, rho);
-    limits_.push_back
-    ({
-        "stokesDrag",
-        2*std::min
-        (
-            StokesDrag::relaxationTime(mMin, aMin, eta),
-            StokesDrag::rotationalRelaxationTime(0.4*mMin*aMin*aMin, aMin, eta)
-        )
-    });
+    if (explicitHydrodynamics)
+    {
+        limits_.push_back
+        ({
+            "stokesDrag",
+            2*std::min
+            (
+                StokesDrag::relaxationTime(mMin, aMin, eta),
+                StokesDrag::rotationalRelaxationTime(0.4*mMin*aMin*aMin, aMin, eta)
+            )
+        });
+    }
 
     const std::pair<double, double> pairs[3] =
         {{aMin, aMin}, {aMin, aMax}, {aMax, aMax}};
+
+    // Contact modes of a pair: inverse inertias (overdamped: none) and
+    // inverse Stokes resistances (explicit drag: none)
+    auto inverseInertia = [&](double ai, double aj)
+    {
+        const double mi = sphereMass(ai, rho);
+        const double mj = sphereMass(aj, rho);
+        return contactModes(ai, mi, 0.4*mi*ai*ai, aj, mj, 0.4*mj*aj*aj);
+    };
+    auto inverseResistance = [&](double ai, double aj)
+    {
+        return contactModes
+        (
+            ai, 6*pi*eta*ai, 8*pi*eta*ai*ai*ai,
+            aj, 6*pi*eta*aj, 8*pi*eta*aj*aj*aj
+        );
+    };
+    auto limit = [&](double k, double gamma, double invM, double invZeta)
+    {
+        return modeLimit
+        (
+            k, gamma,
+            inertia ? 1/invM : 0,
+            explicitHydrodynamics ? 0 : 1/invZeta
+        );
+    };
 
     auto addLimit = [&](const char* name, auto limitOfPair)
     {
@@ -129,12 +197,13 @@ TimeStepLimits::TimeStepLimits
     };
     auto springLimit = [&](double k, double ai, double aj)
     {
-        const double mi = sphereMass(ai, rho);
-        const double mj = sphereMass(aj, rho);
-        return 2/std::sqrt(k*(mi + mj)/(mi*mj));
+        return limit
+        (
+            k, 0, inverseInertia(ai, aj)[0], inverseResistance(ai, aj)[0]
+        );
     };
 
-    if (models.lubrication)
+    if (models.lubrication && explicitHydrodynamics)
     {
         addLimit("lubrication", [&](double ai, double aj)
         {
@@ -143,14 +212,29 @@ TimeStepLimits::TimeStepLimits
     }
     if (models.contact)
     {
+        const FrictionalContact::Params& c = models.contact->params();
         addLimit("contact", [&](double ai, double aj)
         {
-            const double tc = FrictionalContact::contactTimeScale
+            if (explicitHydrodynamics)
+            {
+                const double tc = FrictionalContact::contactTimeScale
+                (
+                    c, sphereMass(ai, rho), ai, sphereMass(aj, rho), aj
+                );
+                return 2*tc/pi;
+            }
+            const std::array<double, 3> invM = inverseInertia(ai, aj);
+            const std::array<double, 3> invZeta = inverseResistance(ai, aj);
+            double dt = std::min
             (
-                models.contact->params(),
-                sphereMass(ai, rho), ai, sphereMass(aj, rho), aj
+                limit(c.kn, c.gammaN, invM[0], invZeta[0]),
+                limit(c.kt, 0, invM[1], invZeta[1])
             );
-            return 2*tc/pi;
+            if (c.kr > 0)
+            {
+                dt = std::min(dt, limit(c.kr, 0, invM[2], invZeta[2]));
+            }
+            return dt;
         });
     }
     if (models.repulsion)
@@ -171,11 +255,30 @@ TimeStepLimits::TimeStepLimits
             );
         });
     }
+
+    for (const TimeStepLimit& l : limits_)
+    {
+        if (!(l.value > 0))
+        {
+            throw std::invalid_argument
+            (
+                "TimeStepLimits: no stable step for the " + l.name
+              + " forces; overdamped, an explicit dashpot must be weaker"
+                " than the Stokes resistance of the pair"
+            );
+        }
+    }
 }
 
 
 const TimeStepLimit& TimeStepLimits::binding() const
 {
+    static const TimeStepLimit none
+        {"none", std::numeric_limits<double>::infinity()};
+    if (limits_.empty())
+    {
+        return none;
+    }
     return *std::min_element
     (
         limits_.begin(), limits_.end(),

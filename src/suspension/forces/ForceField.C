@@ -143,12 +143,14 @@ ForceSummary ForceField::compute
     const AmbientFlow& flow,
     PairList& pairs,
     double dt,
-    std::vector<Mat3>* particleStresslet
+    std::vector<Mat3>* particleStresslet,
+    Forces forces
 )
 {
     const std::size_t N = p.size();
     const int nThreads = omp_get_max_threads();
     const bool perParticle = particleStresslet != nullptr;
+    const bool hydrodynamic = forces == Forces::all;
 
     ambient_.resize(N);
     threadF_.resize(nThreads);
@@ -177,7 +179,8 @@ ForceSummary ForceField::compute
 
     // One pair loop, compiled for the active models only
     const int active =
-        (models_.lubrication ? 1 : 0) | (models_.contact ? 2 : 0)
+        (hydrodynamic && models_.lubrication ? 1 : 0)
+      | (models_.contact ? 2 : 0)
       | (models_.repulsion ? 4 : 0) | (models_.attraction ? 8 : 0);
 
     using Loop = void (ForceField::*)
@@ -236,8 +239,9 @@ ForceSummary ForceField::compute
         #pragma omp for schedule(static)
         for (std::size_t i = 0; i < N; ++i)
         {
-            const StokesDrag::Result d =
-                models_.drag.eval(p.a[i], p.u[i], p.omega[i], ambient_[i]);
+            const StokesDrag::Result d = hydrodynamic
+              ? models_.drag.eval(p.a[i], p.u[i], p.omega[i], ambient_[i])
+              : StokesDrag::Result{Vec3::Zero(), Vec3::Zero(), Mat3::Zero()};
             Vec3 F = d.F;
             Vec3 T = d.T;
             for (int s = 0; s < nThreads; ++s)

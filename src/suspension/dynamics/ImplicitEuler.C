@@ -1,0 +1,86 @@
+#include "dynamics/ImplicitEuler.H"
+
+namespace suspension
+{
+
+ImplicitEuler::ImplicitEuler
+(
+    const ForceModels& models,
+    bool inertia,
+    const ConjugateGradient::Params& solver
+)
+:
+    inertia_(inertia),
+    resistance_(models.drag, models.lubrication),
+    solver_(solver)
+{}
+
+
+void ImplicitEuler::evaluate
+(
+    const Particles& p,
+    const LeesEdwardsBox& box,
+    const std::vector<FlowSample>& ambient,
+    const PairList& pairs,
+    ForceSummary& summary
+)
+{
+    const HydrodynamicResistance::Stresslets S =
+        resistance_.assemble(p, box, ambient, pairs);
+    summary.stresslet[stokes] = S.stokes;
+    summary.stresslet[lubrication] = S.lubrication;
+}
+
+
+void ImplicitEuler::solve
+(
+    Particles& p,
+    const std::vector<FlowSample>& ambient,
+    double dt
+)
+{
+    const std::size_t N = p.size();
+    const bool parallel = N >= HydrodynamicResistance::parallelThreshold;
+    const double invDt = inertia_ ? 1/dt : 0;
+    resistance_.setInertia(p, invDt);
+
+    // Warm start V'^n and right-hand side, relative to the flow at x^n
+    const Eigen::VectorXd& Famb = resistance_.ambientForces();
+    v_.resize(6*N);
+    b_.resize(6*N);
+    #pragma omp parallel for schedule(static) if(parallel)
+    for (std::size_t i = 0; i < N; ++i)
+    {
+        const Vec3 u = p.u[i] - ambient[i].U;
+        const Vec3 w = p.omega[i] - ambient[i].Omega();
+        v_.segment<3>(6*i) = u;
+        v_.segment<3>(6*i + 3) = w;
+        b_.segment<3>(6*i) = Famb.segment<3>(6*i) + p.F[i] + invDt*p.m[i]*u;
+        b_.segment<3>(6*i + 3) = Famb.segment<3>(6*i + 3) + p.T[i] + invDt*p.I[i]*w;
+    }
+
+    statistics_ = solver_.solve(resistance_, b_, v_);
+
+    #pragma omp parallel for schedule(static) if(parallel)
+    for (std::size_t i = 0; i < N; ++i)
+    {
+        p.u[i] = ambient[i].U + v_.segment<3>(6*i);
+        p.omega[i] = ambient[i].Omega() + v_.segment<3>(6*i + 3);
+    }
+}
+
+
+void ImplicitEuler::move(Particles& p, const LeesEdwardsBox& box, double dt)
+{
+    const std::size_t N = p.size();
+    const bool parallel = N >= HydrodynamicResistance::parallelThreshold;
+
+    #pragma omp parallel for schedule(static) if(parallel)
+    for (std::size_t i = 0; i < N; ++i)
+    {
+        p.x[i] += dt*p.u[i];
+        box.wrap(p.x[i], p.u[i]);
+    }
+}
+
+} // namespace suspension
