@@ -17,7 +17,7 @@ rows = list(csv.DictReader(open(os.path.join(here, "benchmark.csv"))))
 
 groups = defaultdict(list)
 for r in rows:
-    key = (r["case"], int(r["N"]), int(r["threads"]), float(r["attractionCutoff"]))
+    key = (r["case"], r["integrator"], int(r["N"]), int(r["threads"]), float(r["attractionCutoff"]))
     groups[key].append(r)
 
 
@@ -27,18 +27,20 @@ def med(rs, col):
 
 
 cols = ["build_half_ms", "build_full_ms", "build_brute_ms", "step_ms",
-        "ns_per_particle_step", "pairs_per_particle", "list_bytes_per_particle",
+        "ns_per_particle_step", "dt", "s_per_strain", "cg_iterations",
+        "pairs_per_particle", "list_bytes_per_particle",
         "paper_NxM_bytes_per_particle", "time_v_max_rss_MB"]
-print("| case | N | threads | attraction cut-off | " + " | ".join(cols) + " |")
-print("|" + "---|" * (4 + len(cols)))
+print("| case | integrator | N | threads | attraction cut-off | " + " | ".join(cols) + " |")
+print("|" + "---|" * (5 + len(cols)))
 for key in sorted(groups):
     rs = groups[key]
-    print("| %s | %d | %d | %g | " % key + " | ".join("%.4g" % med(rs, c) for c in cols) + " |")
+    print("| %s | %s | %d | %d | %g | " % key + " | ".join("%.4g" % med(rs, c) for c in cols) + " |")
 
 fig, ax = plt.subplots(1, 2, figsize=(11, 4.2))
 for threads, style in ((1, "-"), (2, "--")):
-    sel = sorted(k for k in groups if k[0] == "table3" and k[2] == threads and k[3] == 0.5)
-    N = [k[1] for k in sel]
+    sel = sorted((k for k in groups if k[0] == "table3" and k[3] == threads and k[4] == 0.5),
+                 key=lambda k: k[2])
+    N = [k[2] for k in sel]
     for col, label, color in (("build_half_ms", "list build, half stencil", "C0"),
                               ("build_full_ms", "list build, full stencil", "C1"),
                               ("build_brute_ms", "list build, brute force", "C3"),

@@ -32,6 +32,8 @@ run() {
 for r in $(seq 1 "$repeats"); do
     for threads in 1 2; do
         run "$r" "$threads" -case table1 -N 1000 -steps 50 -brute
+        run "$r" "$threads" -case table1 -N 1000 -steps 20 -integrator implicitEuler
+        run "$r" "$threads" -case table1 -N 1000 -steps 20 -integrator overdamped
         run "$r" "$threads" -case table3 -N 4096 -steps 20 -brute -attractionCutoff 0.5
         run "$r" "$threads" -case table3 -N 4096 -steps 10 -attractionCutoff 4
         run "$r" "$threads" -case table3 -N 16384 -steps 10 -attractionCutoff 0.5

@@ -20,6 +20,7 @@ Description
 Usage
     suspensionBenchmark [-case table3|table1] [-N 4096] [-steps 20]
         [-phi 0.5] [-attractionCutoff 4] [-brute] [-header] [-seed 1]
+        [-integrator velocityVerlet|implicitEuler|overdamped]
 
     Threads: OMP_NUM_THREADS. The particles start from a random
     non-overlapping packing; a few steps are taken before timing.
@@ -85,6 +86,8 @@ namespace
         bool brute = false;
         bool header = false;
         std::uint64_t seed = 1;
+        Integrator integrator = Integrator::velocityVerlet;
+        std::string integratorName = "velocityVerlet";
     };
 
     Options parse(int argc, char** argv)
@@ -108,6 +111,18 @@ namespace
             else if (a == "-phi") o.phi = std::stod(value());
             else if (a == "-attractionCutoff") o.attractionCutoff = std::stod(value());
             else if (a == "-seed") o.seed = std::stoull(value());
+            else if (a == "-integrator")
+            {
+                o.integratorName = value();
+                if (o.integratorName == "velocityVerlet") o.integrator = Integrator::velocityVerlet;
+                else if (o.integratorName == "implicitEuler") o.integrator = Integrator::implicitEuler;
+                else if (o.integratorName == "overdamped") o.integrator = Integrator::overdamped;
+                else
+                {
+                    std::cerr << "suspensionBenchmark: unknown integrator " << o.integratorName << "\n";
+                    std::exit(2);
+                }
+            }
             else if (a == "-brute") o.brute = true;
             else if (a == "-header") o.header = true;
             else
@@ -161,10 +176,10 @@ int main(int argc, char** argv)
     if (o.header)
     {
         std::cout
-            << "case,N,threads,phi,attractionCutoff,pairs_per_particle,"
+            << "case,integrator,N,threads,phi,attractionCutoff,pairs_per_particle,"
                "contacts_per_particle,build_half_ms,build_full_ms,build_brute_ms,"
                "step_ms,ns_per_particle_step,dt,dt_limit,list_bytes_per_particle,"
-               "paper_NxM_bytes_per_particle,pack_s,peak_rss_MB\n";
+               "paper_NxM_bytes_per_particle,pack_s,peak_rss_MB,s_per_strain,cg_iterations\n";
         return 0;
     }
 
@@ -184,6 +199,7 @@ int main(int argc, char** argv)
     LeesEdwardsBox box(packed.box.L(), 1.0);
     Simulation::Params sp;
     sp.rho = rho;
+    sp.integrator = o.integrator;
     Simulation sim(packed.particles, box, flow, models(o), sp);
     sim.start(0);
     const double dt = sim.deltaT();
@@ -209,11 +225,16 @@ int main(int argc, char** argv)
 
     // Full explicit steps
     std::vector<double> stepTimes;
+    double cgIterations = 0;
     for (int s = 0; s < o.steps; ++s)
     {
         const auto t0 = Clock::now();
         sim.step(dt);
         stepTimes.push_back(seconds(t0, Clock::now()));
+        if (sim.implicit())
+        {
+            cgIterations += double(sim.implicit()->statistics().iterations)/o.steps;
+        }
     }
     std::sort(stepTimes.begin(), stepTimes.end());
     const double tStep = stepTimes[stepTimes.size()/2];
@@ -233,14 +254,15 @@ int main(int argc, char** argv)
 
     std::printf
     (
-        "%s,%zu,%d,%.4f,%g,%.3f,%.3f,%.3f,%.3f,%.3f,%.4f,%.1f,%.4g,%s,%.1f,%.1f,%.2f,%.1f\n",
-        o.caseName.c_str(), N, omp_get_max_threads(),
+        "%s,%s,%zu,%d,%.4f,%g,%.3f,%.3f,%.3f,%.3f,%.3f,%.4f,%.1f,%.4g,%s,%.1f,%.1f,%.2f,%.1f,%.4g,%g\n",
+        o.caseName.c_str(), o.integratorName.c_str(), N, omp_get_max_threads(),
         solidVolume(radii)/sim.box().volume(), t3 ? o.attractionCutoff : 0.0,
         double(sim.pairs().nPairs())/N,
         double(sim.summary().nContacts)/N,
         1e3*tHalf, 1e3*tFull, 1e3*tBrute,
         1e3*tStep, 1e9*tStep/N, dt, sim.limits().binding().name.c_str(),
-        listBytes, M*(4 + sizeof(ContactState)), packSeconds, peakRSSMB()
+        listBytes, M*(4 + sizeof(ContactState)), packSeconds, peakRSSMB(),
+        tStep/dt, cgIterations
     );
     return 0;
 }
