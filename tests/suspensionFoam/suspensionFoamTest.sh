@@ -10,8 +10,18 @@
 #               in every cloud field, fields and profiles at the write times
 #   restart     a run restarted from a written time matches the
 #               uninterrupted run bitwise (2 threads, contacts with history)
+#   implicitRun the implicitEuler and overdamped integrators: contacts set
+#               the step, CG statistics in the log and in rheology.dat
+#   implicitRestart
+#               restart as above with implicitEuler and overdamped and
+#               adaptive steps (maxDisplacement): the warm start and the
+#               step bound come from the stored velocities
+#   dimensionalInput
+#               tiny/ written in SI units (units dimensional) gives the same
+#               reduced parameters and the same first rheology.dat row
 #   failure     a blown-up run writes its last good state and exits non-zero
-#   bad*        one bad input each: a FatalIOError naming the file and the
+#   bad*, dimensionalConflict
+#               one bad input each: a FatalIOError naming the file and the
 #               entry, before any time step
 #------------------------------------------------------------------------------
 set -euo pipefail
@@ -92,6 +102,95 @@ expectInputError()
 properties=constant/suspensionProperties
 N=100
 
+# Soft, dense: contacts with history form within the first write interval
+# of a run to 0.1 written every 0.05
+softDenseCase()
+{
+    newCase "$1"
+    setEntry "$1" $properties population/volumeFraction 0.45
+    setEntry "$1" $properties StokesNumber 1e-2
+    setEntry "$1" $properties contact/stiffness 1e4
+    setEntry "$1" $properties lubrication/epsilon 0.05
+    setEntry "$1" system/controlDict endTime 0.1
+    setEntry "$1" system/controlDict deltaT 0.01
+    setEntry "$1" system/controlDict writeInterval 5
+    mesh "$1"
+}
+
+# Run case $1 to 0.1 and a copy of it up to 0.05, $1.restarted, from 0.05
+# (2 threads): the state at 0.1 and the rheology rows after 0.05 must be the
+# same bitwise
+expectExactRestart()
+{
+    local a=$work/$1 b=$work/$1.restarted
+    export OMP_NUM_THREADS=2
+    (cd "$a" && wavyShearFoam > log.wavyShearFoam 2>&1) \
+        || fail "uninterrupted run $1"
+    contacts=$(awk '/nContacts/ { print $2 + 0 }' \
+        "$a/0.05/uniform/suspensionState")
+    [ "$contacts" -gt 0 ] || fail "$1: no contact history at 0.05"
+
+    mkdir "$b"
+    cp -r "$a/constant" "$a/system" "$a/0" "$a/0.05" "$b"
+    (cd "$b" && wavyShearFoam > log.wavyShearFoam 2>&1) \
+        || fail "restarted run $1"
+    grep -q "stored suspension" "$b/log.wavyShearFoam" \
+        || fail "$1: the restart did not read the stored suspension"
+
+    for f in lagrangian/suspension/* lagrangian/suspensionContacts/* \
+        uniform/suspensionState particleStress alpha
+    do
+        for path in "$a"/0.1/$f; do
+            rel=${path#"$a"/}
+            cmp -s "$path" "$b/$rel" || fail "$1: $rel differs"
+        done
+    done
+    # The rheology rows after the restart time, too
+    diff <(awk '!/^#/ && $1 > 0.05' \
+            "$a/postProcessing/rheology/0/rheology.dat") \
+         <(awk '!/^#/' "$b/postProcessing/rheology/0.05/rheology.dat") \
+        > /dev/null || fail "$1: rheology.dat rows differ"
+}
+
+# Rewrite the groups of case $1 in SI units (units dimensional) for
+# a0 = 1 um, eta0 = 1 mPa s, gammaDot = 1000/s: the same reduced parameters
+toDimensional()
+{
+    local f="$work/$1/$properties"
+    for entry in StokesNumber lubrication/delta contact/stiffness \
+        contact/stiffnessRatio contact/damping electroChemical/shearRateRatio \
+        electroChemical/forceRatio electroChemical/repulsion/debyeLength
+    do
+        foamDictionary -entry $entry -remove "$f" > /dev/null 2>&1 \
+            || fail "cannot remove $entry"
+    done
+    setEntry "$1" $properties population/radius 1e-6
+    # Appended as text: foamDictionary would round to 6 digits
+    cat >> "$f" <<'EOF'
+units           dimensional;
+dimensional
+{
+    a0              1e-6;                   // m
+    eta0            1e-3;                   // Pa s
+    gammaDot        1e3;                    // 1/s
+    rho             1e3;                    // kg/m3: St = 1e-3
+    deltaLub        5e-8;                   // m: 0.05 a0
+    kn              0.4;                    // N/m: k_hat = 4e5
+    kt              0.1142856;              // N/m: kt/kn = 0.285714
+    gammaN          4e-11;                  // kg/s: gammaN gammaDot/kn = 1e-7
+    FER             1e-12;                  // N: gammaDot/gammaDot0 = 1
+    hamaker         6.315789473684211e-23;  // J: F^R/F^A = 19
+    debyeLength     2e-8;                   // m: 0.02 a0
+}
+EOF
+}
+
+# The engine parameters of the start-up report of log $1
+reducedReport()
+{
+    sed -n '/^Suspension (reduced units/,/^    integration/p' "$1"
+}
+
 case "$test" in
 
 run)
@@ -134,45 +233,74 @@ run)
     ;;
 
 restart)
-    # Soft, dense: contacts with history form within the first write interval
-    newCase a
-    setEntry a $properties population/volumeFraction 0.45
-    setEntry a $properties StokesNumber 1e-2
-    setEntry a $properties contact/stiffness 1e4
-    setEntry a $properties lubrication/epsilon 0.05
-    setEntry a system/controlDict endTime 0.1
-    setEntry a system/controlDict deltaT 0.01
-    setEntry a system/controlDict writeInterval 5
-    mesh a
-    export OMP_NUM_THREADS=2
+    softDenseCase a
+    expectExactRestart a
+    ;;
 
-    (cd "$work/a" && wavyShearFoam > log.wavyShearFoam 2>&1) \
-        || fail "uninterrupted run"
-    contacts=$(awk '/nContacts/ { print $2 + 0 }' \
-        "$work/a/0.05/uniform/suspensionState")
-    [ "$contacts" -gt 0 ] || fail "no contact history at 0.05"
+implicitRun)
+    for integrator in implicitEuler overdamped; do
+        newCase $integrator
+        setEntry $integrator $properties integration/integrator $integrator
+        (cd "$work/$integrator" && wavyShearFoam > log.wavyShearFoam 2>&1) \
+            || fail "wavyShearFoam ($integrator)"
+        log="$work/$integrator/log.wavyShearFoam"
+        grep -q "integration  $integrator," "$log" \
+            || fail "$integrator: no integrator in the start-up report"
+        grep -q "CG solver    tolerance 1e-08, maxIterations 1000" "$log" \
+            || fail "$integrator: no CG parameters in the start-up report"
+        grep -q "binding limit contact" "$log" \
+            || fail "$integrator: the step is not set by the contacts"
+        grep -q "^strain .* CG [1-9][0-9]* iterations" "$log" \
+            || fail "$integrator: no CG statistics in the progress report"
 
-    mkdir "$work/b"
-    cp -r "$work/a/constant" "$work/a/system" "$work/a/0" "$work/a/0.05" \
-        "$work/b"
-    (cd "$work/b" && wavyShearFoam > log.wavyShearFoam 2>&1) \
-        || fail "restarted run"
-    grep -q "stored suspension" "$work/b/log.wavyShearFoam" \
-        || fail "the restart did not read the stored suspension"
-
-    for f in lagrangian/suspension/* lagrangian/suspensionContacts/* \
-        uniform/suspensionState particleStress alpha
-    do
-        for path in "$work"/a/0.1/$f; do
-            rel=${path#"$work"/a/}
-            cmp -s "$path" "$work/b/$rel" || fail "$rel differs"
-        done
+        dat="$work/$integrator/postProcessing/rheology/0/rheology.dat"
+        grep "^# Time" "$dat" \
+            | grep -q "deltaT[[:space:]]*cgIterations[[:space:]]*cgResidual" \
+            || fail "$integrator: rheology.dat: no CG columns"
+        rows=$(grep -vc "^#" "$dat")
+        [ "$rows" -eq 4 ] || fail "$integrator: $rows rows, expected 4"
+        awk '!/^#/ && (NF != 18 || $17 < 1 || $17 > 1000 || $18 > 1e-8) \
+            { exit 1 }' "$dat" \
+            || fail "$integrator: rows without converged CG statistics"
     done
-    # The rheology rows after the restart time, too
-    diff <(awk '!/^#/ && $1 > 0.05' \
-            "$work/a/postProcessing/rheology/0/rheology.dat") \
-         <(awk '!/^#/' "$work/b/postProcessing/rheology/0.05/rheology.dat") \
-        > /dev/null || fail "rheology.dat rows differ"
+    ;;
+
+implicitRestart)
+    # Between steps the implicit integrators keep the velocities: the warm
+    # start of CG, the inertia term of implicitEuler, the adaptive step bound
+    for integrator in implicitEuler overdamped; do
+        softDenseCase $integrator
+        setEntry $integrator $properties integration/integrator $integrator
+        setEntry $integrator $properties integration/maxDisplacement 1e-3
+        expectExactRestart $integrator
+        grep -q "outer step   0.01 >= " "$work/$integrator/log.wavyShearFoam" \
+            || fail "$integrator: no adaptive step"
+    done
+    ;;
+
+dimensionalInput)
+    newCase reduced
+    newCase SI
+    toDimensional SI
+    mesh SI
+    for c in reduced SI; do
+        setEntry $c system/controlDict endTime 0.001
+        (cd "$work/$c" && wavyShearFoam > log.wavyShearFoam 2>&1) \
+            || fail "wavyShearFoam ($c)"
+    done
+    si=$work/SI/log.wavyShearFoam
+    grep -q "^Dimensional input" "$si" \
+        || fail "no dimensional input in the start-up report"
+    [ "$(grep -c "^    group  " "$si")" -eq 8 ] || fail "not 8 groups reported"
+    grep -qF "contact/stiffness = 400000  (kn/(eta0 a0 gammaDot))" "$si" \
+        || fail "no group formula in the report"
+    [ "$(reducedReport "$si" | wc -l)" -eq 9 ] || fail "incomplete report"
+    diff <(reducedReport "$work/reduced/log.wavyShearFoam") \
+         <(reducedReport "$si") >&2 \
+        || fail "the reduced parameters differ"
+    dat=postProcessing/rheology/0/rheology.dat
+    diff <(grep -v "^#" "$work/reduced/$dat") <(grep -v "^#" "$work/SI/$dat") \
+        >&2 || fail "the first rheology.dat row differs"
     ;;
 
 failure)
@@ -239,6 +367,37 @@ badStencil)
     newCase c
     setEntry c $properties integration/stencil quarter
     expectInputError c suspensionProperties quarter
+    ;;
+
+badIntegrator)
+    newCase c
+    setEntry c $properties integration/integrator rungeKutta
+    expectInputError c suspensionProperties integrator rungeKutta \
+        velocityVerlet implicitEuler overdamped
+    ;;
+
+badSolver)
+    newCase c
+    setEntry c $properties integration/integrator overdamped
+    foamDictionary -entry integration/solver -add '{ tolerance 1; }' \
+        "$work/c/$properties" > /dev/null 2>&1
+    expectInputError c suspensionProperties tolerance "(0, 1)"
+    ;;
+
+badDimensional)
+    newCase c
+    toDimensional c
+    setEntry c $properties dimensional/kn -0.4
+    expectInputError c suspensionProperties kn "(0, inf)"
+    ;;
+
+dimensionalConflict)
+    # A group given as well as the SI quantities it is made from
+    newCase c
+    toDimensional c
+    foamDictionary -entry contact/stiffness -add 4e5 "$work/c/$properties" \
+        > /dev/null 2>&1
+    expectInputError c suspensionProperties stiffness "units dimensional"
     ;;
 
 badDeltaT)

@@ -3,7 +3,11 @@
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::rheologyFile::rheologyFile(const objectRegistry& obr)
+Foam::rheologyFile::rheologyFile
+(
+    const objectRegistry& obr,
+    const bool implicit
+)
 :
     functionObjects::writeFile(obr, "rheology", "rheology")
 {
@@ -32,6 +36,11 @@ Foam::rheologyFile::rheologyFile(const objectRegistry& obr)
     for (const char* column : {"nContacts", "maxOverlap", "steps", "deltaT"})
     {
         writeTabbed(os, column);
+    }
+    if (implicit)
+    {
+        writeTabbed(os, "cgIterations");
+        writeTabbed(os, "cgResidual");
     }
     os  << endl;
 }
@@ -62,7 +71,13 @@ void Foam::rheologyFile::write
     os  << tab << label(sim.summary().nContacts)
         << tab << sim.summary().maxOverlap
         << tab << steps
-        << tab << deltaT << endl;
+        << tab << deltaT;
+    if (const suspension::ImplicitEuler* implicit = sim.implicit())
+    {
+        os  << tab << label(implicit->statistics().iterations)
+            << tab << implicit->statistics().residual;
+    }
+    os  << endl;
 }
 
 

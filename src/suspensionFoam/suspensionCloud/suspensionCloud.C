@@ -62,7 +62,8 @@ void Foam::suspensionCloud::checkSetup(const scalar aMax) const
             << "The mean shear rate (entry 'shearRate') of the ambient flow"
             << " is " << flow_->shearRate() << "; " << properties_.name()
             << " is in reduced units a0 = eta0 = gammaDot = 1, so it must be"
-            << " 1 (electroChemical/shearRateRatio sets gammaDot/gammaDot0)"
+            << " 1 (electroChemical/shearRateRatio sets gammaDot/gammaDot0;"
+            << " with units dimensional, dimensional/gammaDot sets gammaDot)"
             << nl << exit(FatalIOError);
     }
 
@@ -221,9 +222,12 @@ void Foam::suspensionCloud::reportStart() const
     {
         Info<< ' ' << l.name.c_str() << ' ' << l.value;
     }
+    const scalar outerSteps =
+        max(scalar(1), std::ceil(runTime_.deltaTValue()/sim.deltaT()));
     Info<< nl
-        << "    outer step   " << runTime_.deltaTValue() << " = "
-        << std::ceil(runTime_.deltaTValue()/sim.deltaT()) << " steps" << nl
+        << "    outer step   " << runTime_.deltaTValue()
+        << (sim.params().maxDisplacement > 0 ? " >= " : " = ") << outerSteps
+        << " steps" << nl
         << "    threads      " << omp_get_max_threads() << nl << endl;
 
     if (userDeltaT > limits.deltaT())
@@ -264,8 +268,13 @@ void Foam::suspensionCloud::reportProgress()
 
     Info<< "strain " << sim.time()
         << "  etaR " << etaR << " (mean " << etaRSum_/etaRSamples_ << ")  "
-        << label((sim.steps() - reportedSteps_)/sinceReport) << " steps/s"
-        << "  ETA " << clockTime(max(toGo, 0)*elapsed/done).c_str() << endl;
+        << label((sim.steps() - reportedSteps_)/sinceReport) << " steps/s";
+    if (const suspension::ImplicitEuler* implicit = sim.implicit())
+    {
+        Info<< "  CG " << label(implicit->statistics().iterations)
+            << " iterations, |r|/|rhs| " << implicit->statistics().residual;
+    }
+    Info<< "  ETA " << clockTime(max(toGo, 0)*elapsed/done).c_str() << endl;
 
     reported_ = now;
     reportedSteps_ = sim.steps();
@@ -361,7 +370,7 @@ void Foam::suspensionCloud::evolve()
     {
         if (!rheology_)
         {
-            rheology_.emplace(mesh_);
+            rheology_.emplace(mesh_, sim_->implicit() != nullptr);
         }
         rheology_->write
         (

@@ -23,9 +23,14 @@ const Foam::Enum<SizeDistribution::Type> distributionTypes
 });
 
 
-//- The distribution named by 'type' with its entries; the entries of the
-//  dictionary are checked against those of the type
-SizeDistribution readDistribution(const dictionary& dict)
+//- The distribution named by 'type' with its entries, radii divided by
+//  lengthUnit; the entries of the dictionary are checked against those of
+//  the type
+SizeDistribution readDistribution
+(
+    const dictionary& dict,
+    const Foam::scalar lengthUnit
+)
 {
     const SizeDistribution::Type type =
         Foam::getEnum(dict, "type", distributionTypes);
@@ -34,7 +39,7 @@ SizeDistribution readDistribution(const dictionary& dict)
     const auto radius = [&](const char* key)
     {
         valid.append(key);
-        return Foam::getScalarIn(dict, key, interval::positive());
+        return Foam::getScalarIn(dict, key, interval::positive())/lengthUnit;
     };
 
     if (type == SizeDistribution::Type::monodisperse)
@@ -78,10 +83,14 @@ SizeDistribution readDistribution(const dictionary& dict)
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::suspensionPopulation::suspensionPopulation(const dictionary& dict)
+Foam::suspensionPopulation::suspensionPopulation
+(
+    const dictionary& dict,
+    const scalar lengthUnit
+)
 :
     dict_(dict),
-    distribution_(readDistribution(dict)),
+    distribution_(readDistribution(dict, lengthUnit)),
     nParticles_(getLabelAtLeast(dict, "nParticles", 1)),
     volumeFraction_
     (

@@ -22,6 +22,13 @@ const Enum<suspension::LubricationTerms> lubricationTerms
     {suspension::LubricationTerms::extended, "extended"},
 });
 
+const Enum<suspension::Integrator> integrators
+({
+    {suspension::Integrator::velocityVerlet, "velocityVerlet"},
+    {suspension::Integrator::implicitEuler, "implicitEuler"},
+    {suspension::Integrator::overdamped, "overdamped"},
+});
+
 const Enum<suspension::Stencil> stencils
 ({
     {suspension::Stencil::half, "half"},
@@ -170,10 +177,21 @@ suspension::Simulation::Params readIntegration
     const scalar St
 )
 {
-    checkEntries(dict, {"deltaT", "safety", "skin", "stencil", "maxOverlap"});
+    checkEntries
+    (
+        dict,
+        {
+            "integrator", "deltaT", "safety", "skin", "stencil", "maxOverlap",
+            "maxDisplacement", "solver"
+        }
+    );
 
     suspension::Simulation::Params p;
     p.rho = St;
+    if (dict.found("integrator", keyType::LITERAL))
+    {
+        p.integrator = getEnum(dict, "integrator", integrators);
+    }
 
     // deltaT: the word 'auto' (step from the stability limits) or a value
     ITstream& is = dict.lookup("deltaT");
@@ -198,6 +216,31 @@ suspension::Simulation::Params readIntegration
     p.skin = getScalarIn(dict, "skin", interval::nonNegative());
     p.stencil = getEnum(dict, "stencil", stencils);
     p.maxOverlap = getScalarIn(dict, "maxOverlap", interval::positive());
+    p.maxDisplacement = getScalarInOrDefault
+    (
+        dict, "maxDisplacement", p.maxDisplacement, interval::positive()
+    );
+
+    // CG of the implicit integrators; read only by them, as the entries of
+    // a model that is off
+    if
+    (
+        p.integrator != suspension::Integrator::velocityVerlet
+     && dict.found("solver", keyType::LITERAL)
+    )
+    {
+        const dictionary& solverDict = dict.subDict("solver");
+        checkEntries(solverDict, {"tolerance", "maxIterations"});
+        p.solver.tolerance = getScalarInOrDefault
+        (
+            solverDict, "tolerance", p.solver.tolerance, interval::open(0, 1)
+        );
+        if (solverDict.found("maxIterations", keyType::LITERAL))
+        {
+            p.solver.maxIterations =
+                getLabelAtLeast(solverDict, "maxIterations", 1);
+        }
+    }
     return p;
 }
 
@@ -228,14 +271,15 @@ Foam::suspensionProperties::suspensionProperties(const objectRegistry& obr)
             IOobject::NO_WRITE
         )
     ),
-    population_(subDict("population")),
-    models_(readModels(*this)),
+    units_(*this),
+    population_(subDict("population"), units_.lengthUnit()),
+    models_(readModels(units_.reduced())),
     simulationParams_
     (
         readIntegration
         (
             subDict("integration"),
-            getScalarIn(*this, "StokesNumber", interval::positive())
+            getScalarIn(units_.reduced(), "StokesNumber", interval::positive())
         )
     ),
     rheologyInterval_(getLabelAtLeast(subDict("output"), "rheologyInterval", 1)),
@@ -245,8 +289,9 @@ Foam::suspensionProperties::suspensionProperties(const objectRegistry& obr)
     (
         *this,
         {
-            "population", "StokesNumber", "lubrication", "contact",
-            "electroChemical", "integration", "ambientFlow", "output"
+            "units", "dimensional", "population", "StokesNumber",
+            "lubrication", "contact", "electroChemical", "integration",
+            "ambientFlow", "output"
         }
     );
     checkEntries(subDict("output"), {"rheologyInterval", "profileBins"});
@@ -266,6 +311,7 @@ void Foam::suspensionProperties::report(Ostream& os) const
     const suspension::ForceModels& m = models_;
     const suspension::Simulation::Params& s = simulationParams_;
 
+    units_.report(os);
     os  << "Suspension (reduced units a0 = eta0 = gammaDot = 1)" << nl
         << "    population   " << population_.dict().get<word>("type")
         << ", N = " << population_.nParticles()
@@ -303,10 +349,18 @@ void Foam::suspensionProperties::report(Ostream& os) const
         os  << "    attraction   A = " << p.A << ", eps/abar = "
             << p.epsilonFraction << ", cut-off gap " << p.cutoffGap << nl;
     }
-    os  << "    integration  deltaT "
+    os  << "    integration  " << integrators.get(s.integrator) << ", deltaT "
         << (s.deltaT > 0 ? Foam::name(s.deltaT) : word("auto"))
         << ", safety " << s.safety << ", skin " << s.skin << ", stencil "
-        << stencils.get(s.stencil) << ", maxOverlap " << s.maxOverlap << nl;
+        << stencils.get(s.stencil) << ", maxOverlap " << s.maxOverlap
+        << ", maxDisplacement "
+        << (s.maxDisplacement > 0 ? Foam::name(s.maxDisplacement) : word("off"))
+        << nl;
+    if (s.integrator != suspension::Integrator::velocityVerlet)
+    {
+        os  << "    CG solver    tolerance " << s.solver.tolerance
+            << ", maxIterations " << label(s.solver.maxIterations) << nl;
+    }
 }
 
 
