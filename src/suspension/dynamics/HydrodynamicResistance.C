@@ -118,7 +118,7 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
 
     // Pairs in lubrication range, counted per first particle
     offset_.assign(N + 1, 0);
-    #pragma omp parallel for schedule(static) if(N >= parallelThreshold)
+    #pragma omp parallel for schedule(static) if(N >= parallelMinParticles)
     for (std::size_t i = 0; i < N; ++i)
     {
         std::uint32_t count = 0;
@@ -141,7 +141,7 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
     // pair; the rows of j wait in pairRows_
     std::vector<Mat3> stokesS(nThreads, Mat3::Zero());
     std::vector<Mat3> lubricationS(nThreads, Mat3::Zero());
-    #pragma omp parallel if(N >= parallelThreshold)
+    #pragma omp parallel if(N >= parallelMinParticles)
     {
         const int t = omp_get_thread_num();
 
@@ -216,7 +216,7 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
     }
 
     // Pass 2: the rows of j, F^E, T^E and diagonal blocks, in pair order
-    #pragma omp parallel for schedule(static) if(N >= parallelThreshold)
+    #pragma omp parallel for schedule(static) if(N >= parallelMinParticles)
     for (std::size_t j = 0; j < N; ++j)
     {
         for (std::uint32_t k = offsetT_[j]; k < offsetT_[j + 1]; ++k)
@@ -246,7 +246,7 @@ void HydrodynamicResistance::setInertia(const Particles& p, double invDt)
     rotation_.resize(N);
     inverseA_.resize(N);
 
-    #pragma omp parallel for schedule(static) if(N >= parallelThreshold)
+    #pragma omp parallel for schedule(static) if(N >= parallelMinParticles)
     for (std::size_t i = 0; i < N; ++i)
     {
         const double a = p.a[i];
@@ -266,7 +266,7 @@ void HydrodynamicResistance::apply(const Vector& x, Vector& y) const
     const std::size_t N = translation_.size();
     y.resize(6*N);
 
-    #pragma omp parallel if(N >= parallelThreshold)
+    #pragma omp parallel if(N >= parallelMinParticles)
     {
         // Pass 1: diagonal, rows of i; rows of j into pairRows_
         #pragma omp for schedule(static)
@@ -305,7 +305,7 @@ void HydrodynamicResistance::precondition(const Vector& r, Vector& z) const
     const std::size_t N = inverseA_.size();
     z.resize(6*N);
 
-    #pragma omp parallel for schedule(static) if(N >= parallelThreshold)
+    #pragma omp parallel for schedule(static) if(N >= parallelMinParticles)
     for (std::size_t i = 0; i < N; ++i)
     {
         z.segment<6>(6*i) = inverseA_[i]*r.segment<6>(6*i);

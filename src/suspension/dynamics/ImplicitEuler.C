@@ -40,7 +40,7 @@ void ImplicitEuler::solve
 )
 {
     const std::size_t N = p.size();
-    const bool parallel = N >= HydrodynamicResistance::parallelThreshold;
+    const bool parallel = N >= parallelMinParticles;
     const double invDt = inertia_ ? 1/dt : 0;
     resistance_.setInertia(p, invDt);
 
@@ -73,7 +73,7 @@ void ImplicitEuler::solve
 void ImplicitEuler::move(Particles& p, const LeesEdwardsBox& box, double dt)
 {
     const std::size_t N = p.size();
-    const bool parallel = N >= HydrodynamicResistance::parallelThreshold;
+    const bool parallel = N >= parallelMinParticles;
 
     #pragma omp parallel for schedule(static) if(parallel)
     for (std::size_t i = 0; i < N; ++i)

@@ -1,5 +1,7 @@
 #include "forces/ForceField.H"
 
+#include "core/Parallel.H"
+
 #include <omp.h>
 
 #include <algorithm>
@@ -27,7 +29,7 @@ void ForceField::pairLoop
     const std::size_t N = p.size();
     const double imageVelocity = box.imageVelocity();
 
-    #pragma omp parallel
+    #pragma omp parallel num_threads(static_cast<int>(threadF_.size()))
     {
         const int t = omp_get_thread_num();
         std::vector<Vec3>& F = threadF_[t];
@@ -148,7 +150,7 @@ ForceSummary ForceField::compute
 )
 {
     const std::size_t N = p.size();
-    const int nThreads = omp_get_max_threads();
+    const int nThreads = threadsFor(N);
     const bool perParticle = particleStresslet != nullptr;
     const bool hydrodynamic = forces == Forces::all;
 
@@ -163,7 +165,7 @@ ForceSummary ForceField::compute
     }
 
     // Ambient flow at the particles, and per-thread buffers cleared
-    #pragma omp parallel
+    #pragma omp parallel num_threads(nThreads)
     {
         const int t = omp_get_thread_num();
         threadF_[t].assign(N, Vec3::Zero());
@@ -232,7 +234,7 @@ ForceSummary ForceField::compute
     }
 
     std::vector<Mat3> stokesStresslet(nThreads, Mat3::Zero());
-    #pragma omp parallel
+    #pragma omp parallel num_threads(nThreads)
     {
         const int t = omp_get_thread_num();
 
