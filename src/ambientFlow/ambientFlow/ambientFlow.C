@@ -1,4 +1,5 @@
 #include "ambientFlow.H"
+#include "ambientFlowAdapter.H"
 #include "volFields.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -116,6 +117,17 @@ void Foam::ambientFlow::writeFields(const fvMesh& mesh) const
         mesh, "shearRateInf", dimless/dimTime,
         [this](const point& p) { return localShearRate(p); }
     );
+}
+
+
+suspension::FlowSample Foam::ambientFlow::sample(const point& p) const
+{
+    suspension::FlowSample f;
+    f.U = toEigen(U(p));
+    f.gradU = toEigen(gradU(p));
+    f.laplacianU = toEigen(laplacianU(p));
+    f.gradLaplacianU = toEigen(gradLaplacianU(p));
+    return f;
 }
 
 

@@ -15,14 +15,7 @@ suspension::FlowSample Foam::ambientFlowAdapter::sample
     const suspension::Vec3& x
 ) const
 {
-    const point p(toFoam(x));
-
-    suspension::FlowSample f;
-    f.U = toEigen(flow_.U(p));
-    f.gradU = toEigen(flow_.gradU(p));
-    f.laplacianU = toEigen(flow_.laplacianU(p));
-    f.gradLaplacianU = toEigen(flow_.gradLaplacianU(p));
-    return f;
+    return flow_.sample(toFoam(x));
 }
 
 
