@@ -554,13 +554,24 @@ TEST(Implicit, ContactStepLimitIsTheStabilityEdge)
 {
     // Two spheres held in contact by +-F, started 10% off the equilibrium
     // overlap F/k_n: stable just below the implicit limit, unstable just
-    // above; Stokes drag and lubrication set no limit
-    ForceModels models;
-    const FrictionalContact::Params c = FrictionalContact::fromGroups(4e5, 2.0/7.0, 1e-7, 1.0);
-    models.contact.emplace(c);
-    const double F = 100;
-    const double overlap = F/c.kn;
+    // above; Stokes drag and lubrication set no limit. Frictional without
+    // lubrication; and frictionless with lubrication, where the normal mode
+    // sees X^A at the regularised gap and the limit is ~100 times larger.
+    ForceModels frictional;
+    frictional.contact.emplace(FrictionalContact::fromGroups(4e5, 2.0/7.0, 1e-7, 1.0));
+    ForceModels lubricated;
+    lubricated.contact.emplace(FrictionalContact::fromGroups(4e5, 2.0/7.0, 1e-7, 0.0));
+    Lubrication::Params lub;
+    lub.epsilon = 1e-3;
+    lub.deltaLub = 0.05;
+    lubricated.lubrication.emplace(lub);
 
+    const double F = 100;
+    const double overlap = F/frictional.contact->params().kn;
+    const double frictionalLimit =
+        TimeStepLimits(frictional, 1.0, 1.0, rho, 1.0, Integrator::overdamped).binding().value;
+
+    for (const ForceModels& models : {frictional, lubricated})
     for (const Integrator integrator : {Integrator::implicitEuler, Integrator::overdamped})
     {
         const TimeStepLimits limits(models, 1.0, 1.0, rho, 1.0, integrator);
@@ -584,6 +595,10 @@ TEST(Implicit, ContactStepLimitIsTheStabilityEdge)
         };
         EXPECT_LT(deviation(0.9), 0.1*overlap);
         EXPECT_GT(deviation(1.1), overlap);
+        if (models.lubrication)
+        {
+            EXPECT_GT(limits.binding().value, 100*frictionalLimit);
+        }
     }
 }
 

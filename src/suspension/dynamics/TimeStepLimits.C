@@ -224,13 +224,28 @@ TimeStepLimits::TimeStepLimits
                 return 2*tc/pi;
             }
             const std::array<double, 3> invM = inverseInertia(ai, aj);
-            const std::array<double, 3> invZeta = inverseResistance(ai, aj);
-            double dt = std::min
-            (
-                limit(c.kn, c.gammaN, invM[0], invZeta[0]),
-                limit(c.kt, 0, invM[1], invZeta[1])
-            );
-            if (c.kr > 0)
+            std::array<double, 3> invZeta = inverseResistance(ai, aj);
+            if (models.lubrication)
+            {
+                // A pair in contact always carries lubrication at the
+                // regularised gap (A.6); along n only X^A acts besides the
+                // drag, F_i = X^A_ii (u_j - u_i), so the normal mode's
+                // resistance is the relative Stokes resistance plus X^A_ii
+                const PairGeometry touching =
+                    PairGeometry::make(Vec3(ai + aj, 0, 0), ai, aj);
+                const double XA =
+                    models.lubrication->coefficients(touching).XA.ii;
+                invZeta[0] = 1/(1/invZeta[0] + XA);
+            }
+            double dt = limit(c.kn, c.gammaN, invM[0], invZeta[0]);
+            // Without friction (mu_C = 0) the tangential spring never
+            // pulls, and without rolling stiffness or friction neither
+            // does the rolling one
+            if (c.muC > 0)
+            {
+                dt = std::min(dt, limit(c.kt, 0, invM[1], invZeta[1]));
+            }
+            if (c.kr > 0 && models.contact->muR() > 0)
             {
                 dt = std::min(dt, limit(c.kr, 0, invM[2], invZeta[2]));
             }
