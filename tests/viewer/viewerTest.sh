@@ -23,4 +23,17 @@ blockMesh > log.blockMesh 2>&1
 wavyShearFoam > log.wavyShearFoam 2>&1 || { tail -30 log.wavyShearFoam; exit 1; }
 N=$(foamDictionary -entry population/nParticles -value constant/suspensionProperties)
 png=${3:-$work/viewer.png}
-xvfb-run -a -s "-screen 0 1280x1024x24" pvpython "$here/viewerTest.py" "$work/case" "$N" "$png"
+
+# pvpython under Xvfb now and then aborts while starting up (SIGABRT, before
+# the script runs) on a loaded machine: try again then, but a failed check
+# (exit 1) fails at once
+for attempt in 1 2 3; do
+    rc=0
+    xvfb-run -a -s "-screen 0 1280x1024x24" \
+        pvpython "$here/viewerTest.py" "$work/case" "$N" "$png" || rc=$?
+    if [ "$rc" -lt 128 ]; then
+        exit "$rc"
+    fi
+    echo "viewerTest: pvpython killed by signal $((rc - 128)) (attempt $attempt)" >&2
+done
+exit "$rc"

@@ -43,6 +43,7 @@ void ForceField::pairLoop
             const FlowSample& fi = ambient_[i];
             const Vec3 wi = p.omega[i] - fi.Omega();
             const Vec3 ui = p.u[i] - fi.U;
+            const Mat3 Ei = fi.E();
 
             for (std::uint32_t k = pairs.offset[i]; k < pairs.offset[i + 1]; ++k)
             {
@@ -66,7 +67,7 @@ void ForceField::pairLoop
                     uj - p.u[i],
                     p.omega[i],
                     p.omega[j],
-                    fi.E(),
+                    Ei,
                     fj.E()
                 };
 
