@@ -24,9 +24,9 @@ wavyShearFoam > log.wavyShearFoam 2>&1 || { tail -30 log.wavyShearFoam; exit 1; 
 N=$(foamDictionary -entry population/nParticles -value constant/suspensionProperties)
 png=${3:-$work/viewer.png}
 
-# pvpython under Xvfb now and then aborts while starting up (SIGABRT, before
-# the script runs) on a loaded machine: try again then, but a failed check
-# (exit 1) fails at once
+# pvpython under Xvfb now and then aborts (SIGABRT, seen twice in about 30
+# runs, both on a loaded machine): try again then, three times at most; a
+# failed check (exit 1) fails at once
 for attempt in 1 2 3; do
     rc=0
     xvfb-run -a -s "-screen 0 1280x1024x24" \
