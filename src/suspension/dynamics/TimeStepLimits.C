@@ -20,6 +20,57 @@ namespace
         return 4.0/3.0*pi*a*a*a*rho;
     }
 
+    //- Resistance of a pair at surface gap h (12 dof: U_i, U_j, Omega_i,
+    //  Omega_j, n = e_x): Stokes drag and torque (A.1), plus lubrication
+    //  (A.2; at the regularised gap A.6 for h <= 0) when it is on and the
+    //  pair is in its range
+    Lubrication::PairMatrix pairResistance
+    (
+        const ForceModels& models,
+        double ai,
+        double aj,
+        double h
+    )
+    {
+        const double eta = models.drag.params().eta;
+        Lubrication::PairMatrix R = Lubrication::PairMatrix::Zero();
+        if (models.lubrication && ai + aj + h < models.lubrication->range(ai, aj))
+        {
+            R = models.lubrication->resistanceMatrix
+            (
+                PairGeometry::make(Vec3(ai + aj + h, 0, 0), ai, aj)
+            );
+        }
+        const double radius[2] = {ai, aj};
+        for (int s = 0; s < 2; ++s)
+        {
+            const double a = radius[s];
+            for (int d = 0; d < 3; ++d)
+            {
+                R(3*s + d, 3*s + d) += 6*pi*eta*a;
+                R(6 + 3*s + d, 6 + 3*s + d) += 8*pi*eta*a*a*a;
+            }
+        }
+        return R;
+    }
+
+    //- Inertia of the same 12 dof
+    Eigen::Matrix<double, 12, 1> pairInertia(double ai, double aj, double rho)
+    {
+        Eigen::Matrix<double, 12, 1> M;
+        const double radius[2] = {ai, aj};
+        for (int s = 0; s < 2; ++s)
+        {
+            const double m = sphereMass(radius[s], rho);
+            for (int d = 0; d < 3; ++d)
+            {
+                M(3*s + d) = m;
+                M(6 + 3*s + d) = 0.4*m*radius[s]*radius[s];
+            }
+        }
+        return M;
+    }
+
     //- Fastest relaxation time of a touching pair under Stokes drag and
     //  lubrication: 1/lambda_max of R v = lambda M v (12 dof)
     double pairRelaxationTime
@@ -30,27 +81,10 @@ namespace
         double rho
     )
     {
-        const double eta = models.drag.params().eta;
-        const PairGeometry g =
-            PairGeometry::make(Vec3(ai + aj, 0, 0), ai, aj);
-
-        Lubrication::PairMatrix R = models.lubrication->resistanceMatrix(g);
-        Eigen::Matrix<double, 12, 1> M;
-        const double radius[2] = {ai, aj};
-        for (int s = 0; s < 2; ++s)
-        {
-            const double a = radius[s];
-            const double m = sphereMass(a, rho);
-            for (int d = 0; d < 3; ++d)
-            {
-                R(3*s + d, 3*s + d) += 6*pi*eta*a;          // (A.1)
-                R(6 + 3*s + d, 6 + 3*s + d) += 8*pi*eta*a*a*a;
-                M(3*s + d) = m;
-                M(6 + 3*s + d) = 0.4*m*a*a;
-            }
-        }
+        const Lubrication::PairMatrix R = pairResistance(models, ai, aj, 0);
         // M^-1/2 R M^-1/2 is symmetric with the same eigenvalues
-        const Eigen::Matrix<double, 12, 1> s = M.cwiseInverse().cwiseSqrt();
+        const Eigen::Matrix<double, 12, 1> s =
+            pairInertia(ai, aj, rho).cwiseInverse().cwiseSqrt();
         const Lubrication::PairMatrix A = s.asDiagonal()*R*s.asDiagonal();
         const double lambdaMax =
             Eigen::SelfAdjointEigenSolver<Lubrication::PairMatrix>
@@ -74,48 +108,66 @@ namespace
         return dt;
     }
 
-    //- Inverse effective inertias of the normal, tangential and rolling
-    //  contact modes of a pair, from the translational (t) and rotational
-    //  (r) inertias of its spheres: masses and moments of inertia, or the
-    //  Stokes resistances 6 pi eta a and 8 pi eta a^3
-    std::array<double, 3> contactModes
+    //- Directions b of the contact modes of a touching pair in the 12 dof
+    //  (n = e_x, t = e_y): the mode coordinate changes at b.v, so a spring
+    //  k on it is the force -k (b.x) b. Normal: n.(u_j - u_i); tangential
+    //  (4b): t.u_t = t.(u_j - u_i) - (a_i omega_i + a_j omega_j).(n x t);
+    //  rolling (B.1): t.u_r = a_ij (omega_i - omega_j).(t x n)
+    std::array<Eigen::Matrix<double, 12, 1>, 3> contactModeDirections
     (
         double ai,
-        double ti,
-        double ri,
-        double aj,
-        double tj,
-        double rj
+        double aj
     )
     {
+        std::array<Eigen::Matrix<double, 12, 1>, 3> b;
+        for (auto& v : b)
+        {
+            v.setZero();
+        }
         const double aij = harmonicRadius(ai, aj);
-        const double normal = 1/ti + 1/tj;
-        return {normal, normal + ai*ai/ri + aj*aj/rj, aij*aij*(1/ri + 1/rj)};
+        b[0](0) = -1;  b[0](3) = 1;                         // normal
+        b[1](1) = -1;  b[1](4) = 1;                         // tangential
+        b[1](8) = -ai; b[1](11) = -aj;                      // n x t = e_z
+        b[2](8) = -aij; b[2](11) = aij;                     // t x n = -e_z
+        return b;
     }
 
-    //- Largest |dF/dh| of a central force over h in [0, hMax], sampled
-    template<class Model>
-    double sampledStiffness(const Model& model, double ai, double aj, double hMax)
+    //- b^T A^-1 b for a symmetric positive-definite A
+    double quadraticInverse
+    (
+        const Lubrication::PairMatrix& A,
+        const Eigen::Matrix<double, 12, 1>& b
+    )
     {
-        const int n = 2000;
-        const double dh = hMax/n;
-        double k = 0;
-        double Fprev = 0;
-        for (int s = 0; s <= n; ++s)
+        return b.dot(A.ldlt().solve(b));
+    }
+
+    //- Inverse effective inertia b^T M^-1 b and inverse effective
+    //  resistance b^T R^-1 b of a mode b of a pair at gap h
+    struct ModeInverses
+    {
+        double inertia;
+        double resistance;
+    };
+
+    ModeInverses modeInverses
+    (
+        const ForceModels& models,
+        double ai,
+        double aj,
+        double h,
+        double rho,
+        const Eigen::Matrix<double, 12, 1>& b
+    )
+    {
+        return
         {
-            const double h = s*dh;
-            const PairGeometry g =
-                PairGeometry::make(Vec3(ai + aj + h, 0, 0), ai, aj);
-            const double F = model.eval(g).F.x();
-            if (s > 0)
-            {
-                k = std::max(k, std::abs(F - Fprev)/dh);
-            }
-            Fprev = F;
-        }
-        return k;
+            b.cwiseAbs2().dot(pairInertia(ai, aj, rho).cwiseInverse()),
+            quadraticInverse(pairResistance(models, ai, aj, h), b)
+        };
     }
 }
+// End anonymous namespace
 
 
 TimeStepLimits::TimeStepLimits
@@ -160,29 +212,16 @@ TimeStepLimits::TimeStepLimits
     const std::pair<double, double> pairs[3] =
         {{aMin, aMin}, {aMin, aMax}, {aMax, aMax}};
 
-    // Contact modes of a pair: inverse inertias (overdamped: none) and
-    // inverse Stokes resistances (explicit drag: none)
-    auto inverseInertia = [&](double ai, double aj)
-    {
-        const double mi = sphereMass(ai, rho);
-        const double mj = sphereMass(aj, rho);
-        return contactModes(ai, mi, 0.4*mi*ai*ai, aj, mj, 0.4*mj*aj*aj);
-    };
-    auto inverseResistance = [&](double ai, double aj)
-    {
-        return contactModes
-        (
-            ai, 6*pi*eta*ai, 8*pi*eta*ai*ai*ai,
-            aj, 6*pi*eta*aj, 8*pi*eta*aj*aj*aj
-        );
-    };
-    auto limit = [&](double k, double gamma, double invM, double invZeta)
+    // Largest stable step of a spring k (dashpot gamma) on a mode with the
+    // given inverse inertia and resistance: no inertia when overdamped, no
+    // implicit resistance when the hydrodynamics is explicit
+    auto limit = [&](double k, double gamma, const ModeInverses& inv)
     {
         return modeLimit
         (
             k, gamma,
-            inertia ? 1/invM : 0,
-            explicitHydrodynamics ? 0 : 1/invZeta
+            inertia ? 1/inv.inertia : 0,
+            explicitHydrodynamics ? 0 : 1/inv.resistance
         );
     };
 
@@ -195,12 +234,33 @@ TimeStepLimits::TimeStepLimits
         }
         limits_.push_back({name, dt});
     };
-    auto springLimit = [&](double k, double ai, double aj)
+
+    // A central force sampled over gaps [0, hMax]: at each gap the spring
+    // |dF/dh| on the normal mode against the resistance at that gap (with
+    // lubrication on, X^A grows towards contact as the force does)
+    auto centralForceLimit = [&](const auto& model, double ai, double aj, double hMax)
     {
-        return limit
-        (
-            k, 0, inverseInertia(ai, aj)[0], inverseResistance(ai, aj)[0]
-        );
+        const Eigen::Matrix<double, 12, 1> n = contactModeDirections(ai, aj)[0];
+        const int samples = 2000;
+        const double dh = hMax/(samples + 1);       // stay inside the cut-off
+        auto force = [&](double h)
+        {
+            return model.eval(PairGeometry::make(Vec3(ai + aj + h, 0, 0), ai, aj)).F.x();
+        };
+        double dt = std::numeric_limits<double>::infinity();
+        double Fh = force(0);
+        for (int s = 0; s < samples; ++s)
+        {
+            const double h = s*dh;
+            const double Fnext = force(h + dh);
+            const double k = std::abs(Fnext - Fh)/dh;
+            Fh = Fnext;
+            if (k > 0)
+            {
+                dt = std::min(dt, limit(k, 0, modeInverses(models, ai, aj, h, rho, n)));
+            }
+        }
+        return dt;
     };
 
     if (models.lubrication && explicitHydrodynamics)
@@ -223,31 +283,29 @@ TimeStepLimits::TimeStepLimits
                 );
                 return 2*tc/pi;
             }
-            const std::array<double, 3> invM = inverseInertia(ai, aj);
-            std::array<double, 3> invZeta = inverseResistance(ai, aj);
-            if (models.lubrication)
-            {
-                // A pair in contact always carries lubrication at the
-                // regularised gap (A.6); along n only X^A acts besides the
-                // drag, F_i = X^A_ii (u_j - u_i), so the normal mode's
-                // resistance is the relative Stokes resistance plus X^A_ii
-                const PairGeometry touching =
-                    PairGeometry::make(Vec3(ai + aj, 0, 0), ai, aj);
-                const double XA =
-                    models.lubrication->coefficients(touching).XA.ii;
-                invZeta[0] = 1/(1/invZeta[0] + XA);
-            }
-            double dt = limit(c.kn, c.gammaN, invM[0], invZeta[0]);
+            // A pair in contact feels Stokes drag and, when on, lubrication
+            // at the regularised gap (A.6)
+            const auto b = contactModeDirections(ai, aj);
+            double dt = limit
+            (
+                c.kn, c.gammaN, modeInverses(models, ai, aj, 0, rho, b[0])
+            );
             // Without friction (mu_C = 0) the tangential spring never
             // pulls, and without rolling stiffness or friction neither
             // does the rolling one
             if (c.muC > 0)
             {
-                dt = std::min(dt, limit(c.kt, 0, invM[1], invZeta[1]));
+                dt = std::min
+                (
+                    dt, limit(c.kt, 0, modeInverses(models, ai, aj, 0, rho, b[1]))
+                );
             }
             if (c.kr > 0 && models.contact->muR() > 0)
             {
-                dt = std::min(dt, limit(c.kr, 0, invM[2], invZeta[2]));
+                dt = std::min
+                (
+                    dt, limit(c.kr, 0, modeInverses(models, ai, aj, 0, rho, b[2]))
+                );
             }
             return dt;
         });
@@ -256,17 +314,17 @@ TimeStepLimits::TimeStepLimits
     {
         addLimit("repulsion", [&](double ai, double aj)
         {
-            return springLimit(models.repulsion->maxStiffness(ai, aj), ai, aj);
+            const double hMax = models.repulsion->range(ai, aj) - ai - aj;
+            return centralForceLimit(*models.repulsion, ai, aj, hMax);
         });
     }
     if (models.attraction)
     {
         addLimit("attraction", [&](double ai, double aj)
         {
-            const double hMax = 0.1*std::min(ai, aj);
-            return springLimit
+            return centralForceLimit
             (
-                sampledStiffness(*models.attraction, ai, aj, hMax), ai, aj
+                *models.attraction, ai, aj, 0.1*std::min(ai, aj)
             );
         });
     }
