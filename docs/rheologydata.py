@@ -1,0 +1,69 @@
+"""Reading wavyShearFoam case output for the analysis scripts of docs/:
+the rheology time series joined over restarts, run times, block averages."""
+import glob
+import math
+import os
+import re
+
+import numpy as np
+
+
+def readRheology(case):
+    """Columns of every postProcessing/rheology/<start>/rheology.dat of a case
+    (one per restart) joined, sorted and unique in strain; None if empty"""
+    rows = {}
+    header = None
+    for f in glob.glob(os.path.join(case, "postProcessing", "rheology", "*", "rheology.dat")):
+        with open(f) as fh:
+            for line in fh:
+                if line.startswith("# Time"):
+                    header = line[1:].split()
+                elif not line.startswith("#") and line.strip():
+                    v = [float(x) for x in line.split()]
+                    rows[v[1]] = v
+    if not rows:
+        return None
+    data = np.array([rows[k] for k in sorted(rows)])
+    return {name: data[:, i] for i, name in enumerate(header)}
+
+
+def wallSeconds(case):
+    """Wall time of all runs of a case (written by etc/caseFunctions)"""
+    try:
+        return float(open(os.path.join(case, "wallSeconds")).read())
+    except OSError:
+        return float("nan")
+
+
+def cpuSeconds(case):
+    """Sum over the solver logs of a case of the last ExecutionTime (CPU s)"""
+    total = 0.0
+    for log in glob.glob(os.path.join(case, "log.wavyShearFoam.*")):
+        last = None
+        with open(log) as fh:
+            for line in fh:
+                m = re.match(r"ExecutionTime = ([0-9.eE+-]+) s", line)
+                if m:
+                    last = float(m.group(1))
+        total += last or 0.0
+    return total
+
+
+def blockMeans(strain, values, start, blocks):
+    """Means of `blocks` blocks of equal strain after `start`, and the block
+    length in strain"""
+    edges = np.linspace(start, strain[-1], blocks + 1)
+    means = []
+    for a, b in zip(edges[:-1], edges[1:]):
+        sel = (strain > a) & (strain <= b)
+        if sel.any():
+            means.append(values[sel].mean())
+    return np.array(means), (strain[-1] - start)/blocks
+
+
+def meanAndError(blocks):
+    """Mean of block means and its standard error"""
+    blocks = np.asarray(blocks)
+    if len(blocks) < 2:
+        return (float(blocks.mean()) if len(blocks) else float("nan")), float("nan")
+    return float(blocks.mean()), float(blocks.std(ddof=1)/math.sqrt(len(blocks)))

@@ -1,0 +1,179 @@
+#!/usr/bin/python3
+"""Analyse the runs of docs/speed-vs-error/run.sh.
+
+    docs/speed-vs-error/analyse.py [--quick]
+
+timeStep: per case, the mean eta_r over the strains sampled by every run
+(a common window from the same initial condition); error against the run with the smallest step
+(implicitEuler, safety 0.01); cost = CPU seconds per unit strain (one
+thread; CPU rather than wall time because other runs shared the machine).
+model: steady eta_r (block averages after the start-up) against the
+reference parameters eps = 1e-3, delta_lub = 0.05 (Table 1).
+Writes timeStep.csv, model.csv, work-precision.png and prints Markdown.
+"""
+import csv
+import glob
+import os
+import re
+import sys
+
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import numpy as np
+
+here = os.path.dirname(os.path.abspath(__file__))
+root = os.path.dirname(os.path.dirname(here))
+sys.path.insert(0, os.path.dirname(here))
+from rheologydata import (blockMeans, cpuSeconds, meanAndError,  # noqa: E402
+                          readRheology, wallSeconds)
+
+quick = "--quick" in sys.argv
+runs = os.path.join(os.environ.get("WSF_SPEED_DIR", os.path.join(root, "run", "speed-vs-error")),
+                    "quick" if quick else "full")
+out = os.path.join(runs, "results") if quick else here
+os.makedirs(out, exist_ok=True)
+
+CASES = ("frictionless", "frictional")
+REFERENCE = "implicitEuler-safety0.01"
+DISCARD = {"frictionless": 5.0, "frictional": 2.0}
+MARKERS = {"implicitEuler": "o", "overdamped": "^", "velocityVerlet": "s"}
+
+
+def writeCsv(name, rows, columns):
+    with open(os.path.join(out, name), "w", newline="") as fh:
+        w = csv.DictWriter(fh, fieldnames=columns)
+        w.writeheader()
+        for r in rows:
+            w.writerow({k: (f"{r[k]:.6g}" if isinstance(r[k], float) else r[k]) for k in columns})
+
+
+def timeStep():
+    rows = []
+    for case in CASES:
+        runsOfCase = {}
+        for d in sorted(glob.glob(os.path.join(runs, "timeStep", case, "*"))):
+            r = readRheology(d)
+            if r is not None:
+                runsOfCase[os.path.basename(d)] = (d, r)
+        if REFERENCE not in runsOfCase and runsOfCase:
+            refLabel = min(runsOfCase, key=lambda k: runsOfCase[k][1]["deltaT"].mean())
+        else:
+            refLabel = REFERENCE
+        if refLabel not in runsOfCase:
+            continue
+        # The strains sampled by every run (runs may sample more often)
+        common = set.intersection(*(set(np.round(r["strain"], 9)) for _, r in runsOfCase.values()))
+        window = max(common)
+
+        def atCommon(r):
+            return np.isin(np.round(r["strain"], 9), list(common))
+
+        ref = runsOfCase[refLabel][1]
+        refMean = ref["etaR"][atCommon(ref)].mean()
+        for label, (d, r) in runsOfCase.items():
+            integrator, safety = re.match(r"(\w+)-safety([0-9.e-]+)", label).groups()
+            sel = atCommon(r)
+            mean = r["etaR"][sel].mean()
+            rows.append({
+                "case": case, "integrator": integrator, "safety": float(safety),
+                "dt": float(r["deltaT"][sel].mean()), "window": float(window),
+                "etaR_mean": float(mean), "reference": float(refMean),
+                "relative_error": float(abs(mean - refMean)/refMean),
+                "cpu_s_per_strain": cpuSeconds(d)/r["strain"][-1],
+                "wall_s_per_strain": wallSeconds(d)/r["strain"][-1],
+                "max_overlap": float(r["maxOverlap"][sel].max()),
+                "cg_iterations": float(r["cgIterations"][sel].mean()) if "cgIterations" in r else float("nan"),
+                "is_reference": label == refLabel})
+    columns = ["case", "integrator", "safety", "dt", "window", "etaR_mean", "reference",
+               "relative_error", "cpu_s_per_strain", "wall_s_per_strain", "max_overlap",
+               "cg_iterations", "is_reference"]
+    writeCsv("timeStep.csv", rows, columns)
+    return rows
+
+
+def model():
+    rows = []
+    for case in CASES:
+        values = {}
+        for d in sorted(glob.glob(os.path.join(runs, "model", case, "*"))):
+            r = readRheology(d)
+            if r is None or len(r["strain"]) < 4:
+                continue
+            start = 0.5*r["strain"][-1] if quick else min(DISCARD[case], 0.5*r["strain"][-1])
+            blocks, blockStrain = blockMeans(r["strain"], r["etaR"], start, 8)
+            m, e = meanAndError(blocks)
+            values[os.path.basename(d)] = (m, e, cpuSeconds(d)/r["strain"][-1], r["strain"][-1], start)
+        ref = values.get("epsilon1e-3")
+        for label, (m, e, cost, strain, start) in values.items():
+            parameter, value = re.match(r"(epsilon|delta)([0-9.e-]+)", label).groups()
+            rows.append({
+                "case": case, "parameter": parameter, "value": float(value), "etaR": m,
+                "error_bar": e,
+                "relative_difference": (m - ref[0])/ref[0] if ref else float("nan"),
+                "reference_etaR": ref[0] if ref else float("nan"),
+                "reference_error_bar": ref[1] if ref else float("nan"),
+                "cpu_s_per_strain": cost, "strain": strain, "discarded_strain": start})
+    columns = ["case", "parameter", "value", "etaR", "error_bar", "relative_difference",
+               "reference_etaR", "reference_error_bar", "cpu_s_per_strain", "strain",
+               "discarded_strain"]
+    writeCsv("model.csv", rows, columns)
+    return rows
+
+
+def plot(tsRows, modelRows):
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
+    for ax, case in zip(axes, CASES):
+        for integrator, marker in MARKERS.items():
+            sel = [r for r in tsRows if r["case"] == case and r["integrator"] == integrator
+                   and not r["is_reference"]]
+            if sel:
+                ax.loglog([r["cpu_s_per_strain"] for r in sel],
+                          [max(r["relative_error"], 1e-6) for r in sel], marker, ms=7,
+                          label=f"{integrator} (time step)")
+                for r in sel:
+                    ax.annotate(f"{r['safety']:g}", (r["cpu_s_per_strain"], max(r["relative_error"], 1e-6)),
+                                fontsize=7, xytext=(3, 3), textcoords="offset points")
+        for parameter, marker in (("epsilon", "D"), ("delta", "v")):
+            sel = [r for r in modelRows if r["case"] == case and r["parameter"] == parameter
+                   and r["relative_difference"] != 0]
+            if sel:
+                ax.errorbar([r["cpu_s_per_strain"] for r in sel],
+                            [abs(r["relative_difference"]) for r in sel],
+                            yerr=[np.nan_to_num(r["error_bar"]/r["reference_etaR"]) for r in sel],
+                            fmt=marker, capsize=3, label=f"{parameter} (model, steady)")
+                for r in sel:
+                    ax.annotate(f"{r['value']:g}", (r["cpu_s_per_strain"], abs(r["relative_difference"])),
+                                fontsize=7, xytext=(3, -9), textcoords="offset points")
+        for level in (0.02, 0.05):
+            ax.axhline(level, color="grey", lw=0.8, ls=":")
+        ax.set_xlabel("CPU seconds per unit strain (1 thread, N = 200)")
+        ax.set_ylabel(r"relative error of $\eta_r$")
+        ax.set_title(f"Table 1 {'FL' if case == 'frictionless' else 'FR'}, $\\phi$ = 0.5")
+        ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "work-precision.png"), dpi=120)
+    plt.close(fig)
+
+
+def main():
+    ts = timeStep()
+    mo = model()
+    plot(ts, mo)
+    print("| case | integrator | safety | dt | mean eta_r (window) | error | CPU s/strain | max overlap | CG its |")
+    print("|---|---|---:|---:|---:|---:|---:|---:|---:|")
+    for r in sorted(ts, key=lambda r: (r["case"], r["integrator"], r["safety"])):
+        error = "reference" if r["is_reference"] else f"{100*r['relative_error']:.2f}%"
+        print(f"| {r['case']} | {r['integrator']} | {r['safety']:g} | {r['dt']:.3g} | "
+              f"{r['etaR_mean']:.4f} | {error} | "
+              f"{r['cpu_s_per_strain']:.3g} | {r['max_overlap']:.2g} | {r['cg_iterations']:.0f} |")
+    print()
+    print("| case | parameter | value | eta_r | ± | difference to eps 1e-3, delta 0.05 | CPU s/strain | strain |")
+    print("|---|---|---:|---:|---:|---:|---:|---:|")
+    for r in sorted(mo, key=lambda r: (r["case"], r["parameter"], r["value"])):
+        print(f"| {r['case']} | {r['parameter']} | {r['value']:g} | {r['etaR']:.4g} | {r['error_bar']:.2g} | "
+              f"{100*r['relative_difference']:+.1f}% | {r['cpu_s_per_strain']:.3g} | {r['strain']:g} |")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,127 @@
+#!/bin/bash
+#------------------------------------------------------------------------------
+# Validation runs of docs/validation.md (issue: validation against the paper).
+#
+#   docs/validation/run.sh [--quick] [case ...]
+#
+# cases: frictionless frictional shearThickening wavy dilute (default: all).
+# Each point is an OpenFOAM case under run/validation/<mode>/<case>/<point>,
+# copied from a tutorial with its entries changed by foamDictionary, and run
+# with wavyShearFoam (implicitEuler) by runCase (etc/caseFunctions): a point
+# that has reached its end time is skipped, one that has not restarts from
+# its latest written time, so the script can be stopped and rerun at will.
+# Then run docs/validation/analyse.py [--quick].
+#
+# --quick: two or three points per case and short strains (a smoke test of
+# the whole chain, minutes); full: the numbers of docs/validation.md.
+# Threads: OMP_NUM_THREADS (default 1 per run).
+#------------------------------------------------------------------------------
+set -u
+here=$(cd "${0%/*}" && pwd)
+root=$(cd "$here/../.." && pwd)
+. "$root/etc/bashrc" || exit 1
+. "$root/etc/caseFunctions" || exit 1
+export OMP_NUM_THREADS=${OMP_NUM_THREADS:-1}
+export OMP_WAIT_POLICY=PASSIVE
+
+mode=full
+if [ "${1:-}" = "--quick" ]; then mode=quick; shift; fi
+cases=${*:-"frictionless frictional shearThickening wavy dilute"}
+runRoot=${WSF_VALIDATION_DIR:-$root/run/validation}/$mode
+failed=0
+
+# point <case> <label> <tutorial> <endTime> <sampling> [entry=value ...]
+point()
+{
+    local case=$1 label=$2 tutorial=$3 endTime=$4 sampling=$5
+    shift 5
+    runCase "$runRoot/$case/$label" "$root/tutorials/$tutorial" "$endTime" "$sampling" \
+        integration/integrator=implicitEuler "$@"
+}
+
+# Paper Table 1 FL: N = 200, a2/a1 = 1.4, V2/V1 = 1, mu_C = 0
+frictionless()
+{
+    local phis="0.40 0.45 0.50 0.53 0.55 0.57" deltas="0.05 0.2" end=30 dense="0.55 0.57"
+    if [ $mode = quick ]; then phis="0.45 0.55"; deltas="0.05"; end=1; dense=""; fi
+    local phi delta seed
+    for delta in $deltas; do
+        for phi in $phis; do
+            for seed in 1 $(echo " $dense " | grep -q " $phi " && echo 2); do
+                point frictionless "delta$delta-phi$phi-seed$seed" uniformShear/frictionless \
+                    $end 0.01 population/volumeFraction=$phi population/seed=$seed \
+                    lubrication/delta=$delta || failed=1
+            done
+        done
+    done
+}
+
+# Paper Table 1 FR: N = 1000, mu_C = 1, delta_lub = 0.05
+frictional()
+{
+    local phis="0.40 0.45 0.48 0.50 0.52 0.54" end=5 dense="0.52 0.54"
+    if [ $mode = quick ]; then phis="0.45"; end=0.2; dense=""; fi
+    local phi seed
+    for phi in $phis; do
+        for seed in 1 $(echo " $dense " | grep -q " $phi " && echo 2); do
+            point frictional "phi$phi-seed$seed" uniformShear/frictional \
+                $end 0.01 population/volumeFraction=$phi population/seed=$seed || failed=1
+        done
+    done
+}
+
+# Paper Table 2 SI: N = 512, phi = 0.46, mu_C = 0.5, against gammaDot/gammaDot0,
+# and the engine's own plateaux without electro-chemical forces
+shearThickening()
+{
+    local rates="1e-5 1e-4 1e-3 1e-2 1e-1 1 10" settings="0.045:19 0.013:1" end=3
+    if [ $mode = quick ]; then rates="1e-3 1"; settings="0.045:19"; end=0.1; fi
+    local s rate
+    for s in $settings; do
+        for rate in $rates; do
+            point shearThickening "lambda${s%:*}-ratio${s#*:}-rate$rate" uniformShear/shearThickening \
+                $end 0.01 electroChemical/shearRateRatio=$rate \
+                electroChemical/forceRatio=${s#*:} \
+                electroChemical/repulsion/debyeLength=${s%:*} || failed=1
+        done
+    done
+    local mu
+    for mu in 0 0.5; do
+        point shearThickening "noElectroChemical-mu$mu" uniformShear/shearThickening \
+            $end 0.01 contact/friction=$mu electroChemical/repulsion/active=false \
+            electroChemical/attraction/active=false || failed=1
+    done
+}
+
+# Paper Table 3 NW and YW from the same initial condition (same seed)
+wavy()
+{
+    local N=1024 end=2
+    if [ $mode = quick ]; then N=256; end=0.05; fi
+    local t
+    for t in NW YW; do
+        point wavy "$t-N$N" wavyShear/$t $end 0.01 population/nParticles=$N \
+            output/profileBins=16 || failed=1
+    done
+}
+
+# Einstein's 1 + 2.5 phi: monodisperse, no contact needed, lubrication on
+dilute()
+{
+    local phis="0.01 0.02 0.05" end=2
+    if [ $mode = quick ]; then phis="0.02"; end=0.2; fi
+    local phi
+    for phi in $phis; do
+        point dilute "phi$phi" uniformShear/frictionless $end 0.01 \
+            population/type=monodisperse population/volumeFraction=$phi \
+            population/sizeRatio=~remove population/volumeRatio=~remove || failed=1
+    done
+}
+
+for c in $cases; do
+    case $c in
+        frictionless|frictional|shearThickening|wavy|dilute) $c ;;
+        *) echo "run.sh: unknown case '$c'" >&2; exit 2 ;;
+    esac
+done
+exit $failed
