@@ -10,21 +10,25 @@ import numpy as np
 
 def readRheology(case):
     """Columns of every postProcessing/rheology/<start>/rheology.dat of a case
-    (one per restart) joined, sorted and unique in strain; None if empty"""
+    (one per restart) joined, sorted and unique in strain; only the columns
+    that every file has (a restart by a newer solver may add columns); None
+    if empty"""
     rows = {}
-    header = None
+    common = None
     for f in glob.glob(os.path.join(case, "postProcessing", "rheology", "*", "rheology.dat")):
+        header = None
         with open(f) as fh:
             for line in fh:
                 if line.startswith("# Time"):
                     header = line[1:].split()
-                elif not line.startswith("#") and line.strip():
-                    v = [float(x) for x in line.split()]
-                    rows[v[1]] = v
+                    common = set(header) if common is None else common & set(header)
+                elif not line.startswith("#") and line.strip() and header:
+                    row = dict(zip(header, (float(x) for x in line.split())))
+                    rows[row["strain"]] = row
     if not rows:
         return None
-    data = np.array([rows[k] for k in sorted(rows)])
-    return {name: data[:, i] for i, name in enumerate(header)}
+    ordered = [rows[k] for k in sorted(rows)]
+    return {name: np.array([r[name] for r in ordered]) for name in common}
 
 
 def wallSeconds(case):

@@ -173,6 +173,9 @@ TEST(Simulation, LoneSphereInWavyFlowMovesWithFaxenVelocity)
     EXPECT_LT((sim.particles().omega[0] - f.Omega()).norm(), 1e-6);
     // and the Faxen correction is not negligible here
     EXPECT_GT((a*a/6*f.laplacianU).norm(), 0.1);
+    // The velocity fluctuation is the Faxen slip |a^2/6 lap U|^2
+    const double slip2 = (a*a/6*f.laplacianU).squaredNorm();
+    EXPECT_NEAR(sim.velocityFluctuation(), slip2, 1e-5*slip2);
 }
 
 

@@ -205,15 +205,15 @@ run)
     grep -q "^# Time" "$dat" || fail "rheology.dat: no column header"
     for column in strain etaR N1 N2 Pi etaN etaR_stokes etaR_lubrication \
         etaR_contact etaR_repulsion etaR_attraction nContacts maxOverlap \
-        steps deltaT
+        steps deltaT uFluct2 pairSlots
     do
         grep "^# Time" "$dat" | grep -qw "$column" \
             || fail "rheology.dat: no column $column"
     done
     rows=$(grep -vc "^#" "$dat")
     [ "$rows" -eq 4 ] || fail "rheology.dat: $rows rows, expected 4"
-    awk '!/^#/ && NF != 16 { exit 1 }' "$dat" \
-        || fail "rheology.dat: rows without 16 columns"
+    awk '!/^#/ && (NF != 18 || $17 < 0 || $18 < 1) { exit 1 }' "$dat" \
+        || fail "rheology.dat: rows without 18 columns"
 
     for t in 0 0.002 0.004; do
         cloud="$work/c/$t/lagrangian/suspension"
@@ -255,11 +255,11 @@ implicitRun)
 
         dat="$work/$integrator/postProcessing/rheology/0/rheology.dat"
         grep "^# Time" "$dat" \
-            | grep -q "deltaT[[:space:]]*cgIterations[[:space:]]*cgResidual" \
+            | grep -q "pairSlots[[:space:]]*cgIterations[[:space:]]*cgResidual" \
             || fail "$integrator: rheology.dat: no CG columns"
         rows=$(grep -vc "^#" "$dat")
         [ "$rows" -eq 4 ] || fail "$integrator: $rows rows, expected 4"
-        awk '!/^#/ && (NF != 18 || $17 < 1 || $17 > 1000 || $18 > 1e-8) \
+        awk '!/^#/ && (NF != 20 || $19 < 1 || $19 > 1000 || $20 > 1e-8) \
             { exit 1 }' "$dat" \
             || fail "$integrator: rows without converged CG statistics"
     done

@@ -247,6 +247,18 @@ Rheology Simulation::rheology() const
 }
 
 
+double Simulation::velocityFluctuation() const
+{
+    const Particles& p = particles_;
+    double sum = 0;
+    for (std::size_t i = 0; i < p.size(); ++i)
+    {
+        sum += (p.u[i] - flow_.sample(p.x[i]).U).squaredNorm();
+    }
+    return p.size() ? sum/p.size() : 0;
+}
+
+
 void Simulation::check() const
 {
     if (implicit_ && !implicit_->statistics().converged)

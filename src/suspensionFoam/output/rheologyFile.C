@@ -33,7 +33,11 @@ Foam::rheologyFile::rheologyFile
     {
         writeTabbed(os, word("etaR_") + suspension::contributionName(c));
     }
-    for (const char* column : {"nContacts", "maxOverlap", "steps", "deltaT"})
+    for
+    (
+        const char* column
+      : {"nContacts", "maxOverlap", "steps", "deltaT", "uFluct2", "pairSlots"}
+    )
     {
         writeTabbed(os, column);
     }
@@ -71,7 +75,9 @@ void Foam::rheologyFile::write
     os  << tab << label(sim.summary().nContacts)
         << tab << sim.summary().maxOverlap
         << tab << steps
-        << tab << deltaT;
+        << tab << deltaT
+        << tab << sim.velocityFluctuation()
+        << tab << label(sim.pairs().nPairs());
     if (const suspension::ImplicitEuler* implicit = sim.implicit())
     {
         os  << tab << label(implicit->statistics().iterations)
