@@ -286,6 +286,47 @@ TEST(Packing, Table1BidisperseAtPhi060)
 }
 
 
+TEST(Packing, RemovesTheOverlapsOfACarelessStart)
+{
+    // A packing at phi = 0.60 with every radius then made 2% larger
+    // (phi = 0.637, overlaps up to 2% of a_i + a_j): the relaxation keeps
+    // ids, radii and masses, moves the centres by less than a diameter
+    // (measured 1.3 a_1) and leaves no gap below minGap; 10% larger (phi = 0.80) cannot be freed
+    const std::vector<double> radii =
+        SizeDistribution::bidisperse(1, 1.4, 1).radii(200);
+    const RandomPacking packing(params(0.6));
+    const RandomPacking::Result r = packing.pack(radii, 2.5);
+    for (const double inflate : {1.02, 1.1})
+    {
+        Particles p = r.particles;
+        for (double& a : p.a)
+        {
+            a *= inflate;
+        }
+        ASSERT_LT(smallestGap(p, r.box), -0.01);
+        const Particles before = p;
+        if (inflate > 1.05)
+        {
+            expectThrow<PackingError>
+            (
+                [&]() { packing.removeOverlaps(p, r.box.L()); }, "jam"
+            );
+            continue;
+        }
+        const double moved = packing.removeOverlaps(p, r.box.L());
+        EXPECT_GE(smallestGap(p, r.box), 1e-6);
+        EXPECT_GT(moved, 0);
+        EXPECT_LT(moved, 2.0);
+        for (std::size_t i = 0; i < p.size(); ++i)
+        {
+            EXPECT_EQ(p.id[i], before.id[i]);
+            EXPECT_EQ(p.a[i], before.a[i]);
+            EXPECT_EQ(p.m[i], before.m[i]);
+        }
+    }
+}
+
+
 TEST(Packing, Table3BidisperseAtPhi055)
 {
     // a2/a1 = 3, V2/V1 = 0.25 (paper, table 3) at N = 1000, phi = 0.55

@@ -450,6 +450,37 @@ inconsistentCloud)
     expectInputError c "0/lagrangian/suspension/d" "holds 99 entries"
     ;;
 
+overlappingStart|jammedStart)
+    # A cloud at time 0 whose diameters were made larger by hand: 3% at
+    # phi = 0.5 (phi 0.55) is separated before the first step; 35% (phi
+    # 1.2) cannot be and stops naming the cloud (300 spheres: the box holds
+    # 3 cut-offs of the grown spheres)
+    newCase c
+    setEntry c $properties population/volumeFraction 0.5
+    setEntry c $properties population/nParticles 300
+    mesh c
+    (cd "$work/c" && makeSuspension > log.makeSuspension 2>&1) \
+        || fail "makeSuspension"
+    factor=1.03
+    [ "$test" = jammedStart ] && factor=1.35
+    d="$work/c/0/lagrangian/suspension/d"
+    awk -v f=$factor '/^\(/ { inside = 1; print; next } /^\)/ { inside = 0 }
+        { if (inside) printf "%.12g\n", f*$1; else print }' "$d" > "$d.tmp" \
+        && mv "$d.tmp" "$d"
+    if [ "$test" = jammedStart ]; then
+        expectInputError c "0/uniform/suspensionState" "cannot be separated" "jam"
+    else
+        (cd "$work/c" && wavyShearFoam > log.wavyShearFoam 2>&1) \
+            || fail "wavyShearFoam"
+        grep -q "overlapped; separated by FIRE" "$work/c/log.wavyShearFoam" \
+            || fail "no report of the separated overlaps"
+        awk '/^# Time/ { for (i = 2; i <= NF; i++) col[$i] = i - 1; next }
+             !/^#/ && $col["maxOverlap"] > 0.01 { exit 1 }' \
+            "$work/c/postProcessing/rheology/0/rheology.dat" \
+            || fail "overlaps above 1% of the radius after the start"
+    fi
+    ;;
+
 *)
     echo "unknown test $test" >&2
     exit 2

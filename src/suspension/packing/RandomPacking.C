@@ -8,6 +8,7 @@
 #include <cmath>
 #include <random>
 #include <sstream>
+#include <unordered_map>
 #include <utility>
 
 namespace suspension
@@ -158,7 +159,108 @@ namespace
         }
         return violations;
     }
+
+    //- FIRE (see the header) on the working particles p (masses (a/a_min)^3)
+    //  until no pair has a gap below minGap; counts its steps in stats
+    Stage relaxOverlaps
+    (
+        Particles& p,
+        const LeesEdwardsBox& box,
+        double hTarget,
+        double minGap,
+        double aMin,
+        std::size_t maxStageIterations,
+        std::size_t maxIterations,
+        NeighbourSearch& search,
+        PairList& list,
+        RandomPacking::Statistics& stats
+    )
+    {
+        const std::size_t N = p.size();
+        const std::vector<Vec3> Uinf(N, Vec3::Zero());
+        std::vector<std::vector<Vec3>> threadF(omp_get_max_threads());
+
+        // Velocity mixing u <- keep u + mix F, then the move x += dt u,
+        // with the path accounting of the Verlet criterion
+        auto mixAndMove = [&](double keep, double mix, double dt)
+        {
+            #pragma omp parallel for schedule(static) if(N >= searchParallelMin)
+            for (std::size_t i = 0; i < N; ++i)
+            {
+                p.u[i] = keep*p.u[i] + mix*p.F[i];
+                p.x[i] += dt*p.u[i];
+                box.wrap(p.x[i], p.u[i]);
+            }
+            search.accumulate(p, Uinf, dt);
+        };
+
+        double dt = dtStart;
+        double alpha = alphaStart;
+        std::size_t nPositive = 0;
+        std::fill(p.u.begin(), p.u.end(), Vec3::Zero());
+        for (std::size_t step = 0; step < maxStageIterations; ++step)
+        {
+            search.update(p, box, list, 0);
+            if (overlapForces(p, box, list, hTarget, minGap, threadF) == 0)
+            {
+                return Stage::overlapFree;
+            }
+            if (stats.iterations == maxIterations)
+            {
+                return Stage::unfinished;
+            }
+            ++stats.iterations;
+
+            // power F.u and |F|^2
+            const Eigen::Vector2d PF = sum
+            (
+                N, Eigen::Vector2d::Zero().eval(),
+                [&](std::size_t i)
+                {
+                    return Eigen::Vector2d(p.F[i].dot(p.u[i]), p.F[i].squaredNorm());
+                }
+            );
+            if (PF.y() < N*jammedForce*jammedForce*aMin*aMin)
+            {
+                return Stage::jammed;
+            }
+            if (PF.x() > 0)
+            {
+                if (++nPositive > nDelay)
+                {
+                    dt = std::min(dt*fInc, dtMax);
+                    alpha *= fAlpha;
+                }
+            }
+            else
+            {
+                nPositive = 0;
+                if (step >= nDelay && dt*fDec >= dtMin)
+                {
+                    dt *= fDec;
+                    alpha = alphaStart;
+                }
+                // half a step back (reversed velocities), then stop
+                mixAndMove(-1, 0, 0.5*dt);
+                std::fill(p.u.begin(), p.u.end(), Vec3::Zero());
+            }
+
+            // u += dt F/m, summing |u|^2
+            const double u2 = sum
+            (
+                N, 0.0,
+                [&](std::size_t i)
+                {
+                    p.u[i] += dt/p.m[i]*p.F[i];
+                    return p.u[i].squaredNorm();
+                }
+            );
+            mixAndMove(1 - alpha, alpha*std::sqrt(u2/PF.y()), dt);
+        }
+        return Stage::unfinished;
+    }
 }
+
 
 
 PackingError::PackingError(const std::string& message, double phiReached)
@@ -241,92 +343,7 @@ RandomPacking::Result RandomPacking::pack
 
     NeighbourSearch search({hTarget, skin*aMin, Stencil::half});
     PairList list;
-    const std::vector<Vec3> Uinf(N, Vec3::Zero());
-    std::vector<std::vector<Vec3>> threadF(omp_get_max_threads());
     Statistics stats;
-
-    // FIRE velocity mixing u <- keep u + mix F, then the move x += dt u,
-    // with the path accounting of the Verlet criterion
-    auto mixAndMove = [&](double keep, double mix, double dt)
-    {
-        #pragma omp parallel for schedule(static) if(N >= searchParallelMin)
-        for (std::size_t i = 0; i < N; ++i)
-        {
-            p.u[i] = keep*p.u[i] + mix*p.F[i];
-            p.x[i] += dt*p.u[i];
-            box.wrap(p.x[i], p.u[i]);
-        }
-        search.accumulate(p, Uinf, dt);
-    };
-
-    // FIRE until no pair has a gap below minGap
-    auto relax = [&]()
-    {
-        double dt = dtStart;
-        double alpha = alphaStart;
-        std::size_t nPositive = 0;
-        std::fill(p.u.begin(), p.u.end(), Vec3::Zero());
-        for (std::size_t step = 0; step < p_.maxStageIterations; ++step)
-        {
-            search.update(p, box, list, 0);
-            if (overlapForces(p, box, list, hTarget, minGap, threadF) == 0)
-            {
-                return Stage::overlapFree;
-            }
-            if (stats.iterations == p_.maxIterations)
-            {
-                return Stage::unfinished;
-            }
-            ++stats.iterations;
-
-            // power F.u and |F|^2
-            const Eigen::Vector2d PF = sum
-            (
-                N, Eigen::Vector2d::Zero().eval(),
-                [&](std::size_t i)
-                {
-                    return Eigen::Vector2d(p.F[i].dot(p.u[i]), p.F[i].squaredNorm());
-                }
-            );
-            if (PF.y() < N*jammedForce*jammedForce*aMin*aMin)
-            {
-                return Stage::jammed;
-            }
-            if (PF.x() > 0)
-            {
-                if (++nPositive > nDelay)
-                {
-                    dt = std::min(dt*fInc, dtMax);
-                    alpha *= fAlpha;
-                }
-            }
-            else
-            {
-                nPositive = 0;
-                if (step >= nDelay && dt*fDec >= dtMin)
-                {
-                    dt *= fDec;
-                    alpha = alphaStart;
-                }
-                // half a step back (reversed velocities), then stop
-                mixAndMove(-1, 0, 0.5*dt);
-                std::fill(p.u.begin(), p.u.end(), Vec3::Zero());
-            }
-
-            // u += dt F/m, summing |u|^2
-            const double u2 = sum
-            (
-                N, 0.0,
-                [&](std::size_t i)
-                {
-                    p.u[i] += dt/p.m[i]*p.F[i];
-                    return p.u[i].squaredNorm();
-                }
-            );
-            mixAndMove(1 - alpha, alpha*std::sqrt(u2/PF.y()), dt);
-        }
-        return Stage::unfinished;
-    };
 
     // Stages: after a success grow by `step`; after a failure retry from the
     // current positions halfway between the last success and the failed
@@ -343,7 +360,11 @@ RandomPacking::Result RandomPacking::pack
         }
         search.rebuild(p, box, list);
         ++stats.stages;
-        const Stage outcome = relax();
+        const Stage outcome = relaxOverlaps
+        (
+            p, box, hTarget, minGap, aMin, p_.maxStageIterations,
+            p_.maxIterations, search, list, stats
+        );
         if (outcome == Stage::overlapFree)
         {
             phiReached = phiStage;
@@ -389,6 +410,74 @@ RandomPacking::Result RandomPacking::pack
         result.add(p.x[index[k]], radii[k], rho, static_cast<std::int64_t>(k));
     }
     return Result{std::move(result), box, stats};
+}
+
+double RandomPacking::removeOverlaps(Particles& particles, const Vec3& L) const
+{
+    const LeesEdwardsBox box(L, 0);
+    const std::size_t N = particles.size();
+    if (N == 0)
+    {
+        return 0;
+    }
+    const double aMin = *std::min_element(particles.a.begin(), particles.a.end());
+    const double aMax = *std::max_element(particles.a.begin(), particles.a.end());
+    const double minGap = p_.minGap*aMin;
+    const double hTarget = minGap + margin*aMin;
+    if (!(L.minCoeff() >= 3*(2*aMax + hTarget + skin*aMin)))
+    {
+        throw std::invalid_argument
+        (
+            std::string(model) + ": box too small for the neighbour search"
+        );
+    }
+
+    // Working copy with the minimiser's masses (a/a_min)^3
+    const double unitMassDensity = 3/(4*pi*aMin*aMin*aMin);
+    Particles p;
+    for (std::size_t i = 0; i < N; ++i)
+    {
+        p.add(particles.x[i], particles.a[i], unitMassDensity, particles.id[i]);
+    }
+    NeighbourSearch search({hTarget, skin*aMin, Stencil::half});
+    PairList list;
+    search.rebuild(p, box, list);
+    Statistics stats;
+    const Stage outcome = relaxOverlaps
+    (
+        p, box, hTarget, minGap, aMin, p_.maxStageIterations,
+        p_.maxIterations, search, list, stats
+    );
+    if (outcome != Stage::overlapFree)
+    {
+        std::ostringstream msg;
+        msg << model << ": could not remove the overlaps of " << N
+            << " spheres in the box (" << L.transpose() << "): "
+            << (
+                   outcome == Stage::jammed
+                 ? "they jam (FIRE converged with overlaps left)"
+                 : "overlaps left after the FIRE step limit"
+               )
+            << " after " << stats.iterations << " steps";
+        throw PackingError(msg.str(), 0);
+    }
+
+    // The rebuilds re-order the working copy: map back by id
+    std::unordered_map<std::int64_t, std::size_t> index;
+    for (std::size_t i = 0; i < N; ++i)
+    {
+        index[p.id[i]] = i;
+    }
+    double largest = 0;
+    for (std::size_t i = 0; i < N; ++i)
+    {
+        const Vec3& x = p.x[index.at(particles.id[i])];
+        Vec3 r = x - particles.x[i];
+        nearestImage(r, L);
+        largest = std::max(largest, r.norm());
+        particles.x[i] = x;
+    }
+    return largest;
 }
 
 } // namespace suspension

@@ -124,6 +124,35 @@ void Foam::suspensionCloud::checkSetup(const scalar aMax) const
 }
 
 
+void Foam::suspensionCloud::removeInitialOverlaps
+(
+    suspension::Particles& particles
+) const
+{
+    try
+    {
+        const scalar moved =
+            properties_.population().removeOverlaps(particles, start_.box);
+        if (moved > 0)
+        {
+            Info<< "    overlaps     the spheres of " << start_.file
+                << " overlapped; separated by FIRE relaxation (largest"
+                << " displacement " << moved << " a0); the relaxed"
+                << " configuration is written at the first write time" << nl;
+        }
+    }
+    catch (const suspension::PackingError& err)
+    {
+        FatalIOErrorInFunction(start_.file)
+            << "The spheres stored in " << start_.file << " overlap and"
+            << " cannot be separated in their box: " << err.what() << nl
+            << "    Start from a packing of makeSuspension (remove the time"
+            << " directories), or lower population/volumeFraction"
+            << exit(FatalIOError);
+    }
+}
+
+
 void Foam::suspensionCloud::start(const scalar t, const bool forcesGiven)
 {
     try
@@ -313,6 +342,10 @@ Foam::suspensionCloud::suspensionCloud(Time& runTime, const fvMesh& mesh)
     {
         particles = suspensionIO::readParticles(mesh_, start_, rho);
         checkSetup(particles.maxRadius());
+        if (start_.steps == 0 && start_.nContacts == 0)
+        {
+            removeInitialOverlaps(particles);
+        }
     }
     else
     {

@@ -131,12 +131,33 @@ Foam::suspensionPopulation::suspensionPopulation
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-suspension::Particles Foam::suspensionPopulation::pack(const scalar rho) const
+suspension::RandomPacking::Params
+Foam::suspensionPopulation::packingParams() const
 {
     suspension::RandomPacking::Params params;
     params.phi = volumeFraction_;
     params.seed = static_cast<std::uint64_t>(seed_);
     params.aspect = toEigen(aspect_);
+    return params;
+}
+
+
+Foam::scalar Foam::suspensionPopulation::removeOverlaps
+(
+    suspension::Particles& particles,
+    const vector& L
+) const
+{
+    return suspension::RandomPacking(packingParams()).removeOverlaps
+    (
+        particles, toEigen(L)
+    );
+}
+
+
+suspension::Particles Foam::suspensionPopulation::pack(const scalar rho) const
+{
+    const suspension::RandomPacking::Params params = packingParams();
 
     try
     {
