@@ -63,6 +63,7 @@ int main(int argc, char *argv[])
         runTime.write();
     }
 
+    particles.reportKernelTimes();
     runTime.printExecutionTime(Info);
 
     Info<< "End\n" << endl;

@@ -5,9 +5,14 @@ Application
 Description
     Times the engine on the paper's suspensions and prints one CSV row
     (header with -header): neighbour-search rebuild times for the half and
-    full stencils and brute force, time per full explicit step, ns per
-    particle-step, peak resident memory, and the bytes per particle of the
-    pair list with contact history next to the paper's N x M table.
+    full stencils and brute force, time per full step, ns per
+    particle-step, peak resident memory, the bytes per particle of the
+    pair list with contact history next to the paper's N x M table, and
+    the ns per particle-step of each kernel (core/KernelTimes.H: flow
+    sampling, pair loop, particle terms, search, implicit hydrodynamics,
+    integration; means over the timed steps, rebuild steps included).
+    -off switches a force model off (repeatable); the pair range `gap`
+    then shrinks to what the remaining models need.
 
     Cases (paper tables, all in reduced units a0 = eta0 = gammaDot = 1):
       table3  bidisperse a2/a1 = 3, V2/V1 = 0.25, phi = 0.5; St = 1e-3,
@@ -21,6 +26,7 @@ Usage
     suspensionBenchmark [-case table3|table1] [-N 4096] [-steps 20]
         [-phi 0.5] [-attractionCutoff 4] [-brute] [-header] [-seed 1]
         [-integrator velocityVerlet|implicitEuler|overdamped]
+        [-off lubrication|contact|rolling|repulsion|attraction]...
 
     Threads: OMP_NUM_THREADS. The particles start from a random
     non-overlapping packing; a few steps are taken before timing.
@@ -88,6 +94,12 @@ namespace
         std::uint64_t seed = 1;
         Integrator integrator = Integrator::velocityVerlet;
         std::string integratorName = "velocityVerlet";
+        std::vector<std::string> off;       // models switched off
+
+        bool on(const std::string& model) const
+        {
+            return std::find(off.begin(), off.end(), model) == off.end();
+        }
     };
 
     Options parse(int argc, char** argv)
@@ -123,6 +135,21 @@ namespace
                     std::exit(2);
                 }
             }
+            else if (a == "-off")
+            {
+                const std::string m = value();
+                if
+                (
+                    m != "lubrication" && m != "contact" && m != "rolling"
+                 && m != "repulsion" && m != "attraction"
+                )
+                {
+                    std::cerr << "suspensionBenchmark: -off takes lubrication,"
+                        " contact, rolling, repulsion or attraction, not " << m << "\n";
+                    std::exit(2);
+                }
+                o.off.push_back(m);
+            }
             else if (a == "-brute") o.brute = true;
             else if (a == "-header") o.header = true;
             else
@@ -143,26 +170,48 @@ namespace
     {
         const bool t3 = o.caseName == "table3";
         ForceModels m;
-        Lubrication::Params lub;
-        lub.epsilon = 1e-3;
-        lub.deltaLub = t3 ? 0.25 : 0.05;
-        m.lubrication.emplace(lub);
-        FrictionalContact::Params c =
-            FrictionalContact::fromGroups(4e5, 2.0/7.0, 1e-7, 1.0);
-        if (t3)
+        if (o.on("lubrication"))
         {
-            c.kr = 0.1*c.kn;
+            Lubrication::Params lub;
+            lub.epsilon = 1e-3;
+            lub.deltaLub = t3 ? 0.25 : 0.05;
+            m.lubrication.emplace(lub);
         }
-        m.contact.emplace(c);
+        if (o.on("contact"))
+        {
+            FrictionalContact::Params c =
+                FrictionalContact::fromGroups(4e5, 2.0/7.0, 1e-7, 1.0);
+            if (t3 && o.on("rolling"))
+            {
+                c.kr = 0.1*c.kn;
+            }
+            m.contact.emplace(c);
+        }
         if (t3)
         {
             const ElectroChemicalScales scales({1.0, 19.0, 0.01});
-            m.repulsion.emplace(scales.repulsion(0.02));
-            VanDerWaalsAttraction::Params att = scales.attraction();
-            att.cutoffGap = o.attractionCutoff;
-            m.attraction.emplace(att);
+            if (o.on("repulsion"))
+            {
+                m.repulsion.emplace(scales.repulsion(0.02));
+            }
+            if (o.on("attraction"))
+            {
+                VanDerWaalsAttraction::Params att = scales.attraction();
+                att.cutoffGap = o.attractionCutoff;
+                m.attraction.emplace(att);
+            }
         }
         return m;
+    }
+
+    std::string joined(const std::vector<std::string>& names)
+    {
+        std::string s;
+        for (const std::string& n : names)
+        {
+            s += (s.empty() ? "" : "+") + n;
+        }
+        return s.empty() ? "none" : s;
     }
 }
 
@@ -180,7 +229,8 @@ int main(int argc, char** argv)
                "contacts_per_particle,build_half_ms,build_full_ms,build_brute_ms,"
                "step_ms,ns_per_particle_step,dt,dt_limit,list_bytes_per_particle,"
                "paper_NxM_bytes_per_particle,pack_s,peak_rss_MB,s_per_strain,cg_iterations,"
-               "steps,rebuilds\n";
+               "steps,rebuilds,off,gap,flow_ns,pairs_ns,particle_ns,search_ns,"
+               "hydrodynamics_ns,integration_ns\n";
         return 0;
     }
 
@@ -224,7 +274,8 @@ int main(int argc, char** argv)
     const double tFull = buildTime(Stencil::full);
     const double tBrute = o.brute ? buildTime(Stencil::bruteForce) : NAN;
 
-    // Full explicit steps
+    // Full steps, with the time of each kernel
+    sim.resetKernelTimes();
     std::vector<double> stepTimes;
     double cgIterations = 0;
     const std::size_t buildsBefore = sim.search().statistics().builds;
@@ -258,7 +309,7 @@ int main(int argc, char** argv)
 
     std::printf
     (
-        "%s,%s,%zu,%d,%.4f,%g,%.3f,%.3f,%.3f,%.3f,%.3f,%.4f,%.1f,%.4g,%s,%.1f,%.1f,%.2f,%.1f,%.4g,%g,%d,%zu\n",
+        "%s,%s,%zu,%d,%.4f,%g,%.3f,%.3f,%.3f,%.3f,%.3f,%.4f,%.1f,%.4g,%s,%.1f,%.1f,%.2f,%.1f,%.4g,%g,%d,%zu",
         o.caseName.c_str(), o.integratorName.c_str(), N, omp_get_max_threads(),
         solidVolume(radii)/sim.box().volume(), t3 ? o.attractionCutoff : 0.0,
         double(sim.pairs().nPairs())/N,
@@ -267,6 +318,16 @@ int main(int argc, char** argv)
         1e3*tStep, 1e9*tStep/N, dt, sim.limits().binding().name.c_str(),
         listBytes, M*(4 + sizeof(ContactState)), packSeconds, peakRSSMB(),
         tStep/dt, cgIterations, o.steps, rebuilds
+    );
+    const KernelTimes k = sim.kernelTimes();
+    const double perParticleStep = 1e9/(double(N)*o.steps);
+    std::printf
+    (
+        ",%s,%.4g,%.1f,%.1f,%.1f,%.1f,%.1f,%.1f\n",
+        joined(o.off).c_str(), sim.search().params().gap,
+        k.flowSampling*perParticleStep, k.pairLoop*perParticleStep,
+        k.particleTerms*perParticleStep, k.search*perParticleStep,
+        k.hydrodynamics*perParticleStep, k.integration*perParticleStep
     );
     return 0;
 }

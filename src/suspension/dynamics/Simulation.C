@@ -99,6 +99,7 @@ void Simulation::evaluateForces(double dt)
             particles_, box_, flow_, pairs_, dt, nullptr,
             ForceField::Forces::nonHydrodynamic
         );
+        ScopedTime timer(times_.hydrodynamics);
         implicit_->evaluate
         (
             particles_, box_, forces_.ambient(), pairs_, summary_
@@ -146,23 +147,34 @@ void Simulation::step(double dt)
     }
     if (implicit_)
     {
+        ScopedTime timer(times_.hydrodynamics);
         implicit_->solve(particles_, ambient, dt);  // u^(n+1) at x^n
     }
-    search_.accumulate(particles_, Uinf_, dt);
+    {
+        ScopedTime timer(times_.search);
+        search_.accumulate(particles_, Uinf_, dt);
+    }
 
     box_.setTime(time_ + dt);
-    if (implicit_)
     {
-        ImplicitEuler::move(particles_, box_, dt);
+        ScopedTime timer(times_.integration);
+        if (implicit_)
+        {
+            ImplicitEuler::move(particles_, box_, dt);
+        }
+        else
+        {
+            VelocityVerlet::predict(particles_, box_, dt);
+        }
     }
-    else
     {
-        VelocityVerlet::predict(particles_, box_, dt);
+        ScopedTime timer(times_.search);
+        search_.update(particles_, box_, pairs_, flow_.maxVelocityGradient());
     }
-    search_.update(particles_, box_, pairs_, flow_.maxVelocityGradient());
     evaluateForces(dt);
     if (!implicit_)
     {
+        ScopedTime timer(times_.integration);
         VelocityVerlet::correct(particles_, dt);
     }
 
@@ -244,6 +256,24 @@ Rheology Simulation::rheology() const
         summary_, box_.volume(), forces_.models().drag.params().eta,
         flow_.shearRate()
     );
+}
+
+
+KernelTimes Simulation::kernelTimes() const
+{
+    KernelTimes t = times_;
+    const KernelTimes& f = forces_.times();
+    t.flowSampling = f.flowSampling;
+    t.pairLoop = f.pairLoop;
+    t.particleTerms = f.particleTerms;
+    return t;
+}
+
+
+void Simulation::resetKernelTimes()
+{
+    times_ = KernelTimes();
+    forces_.resetTimes();
 }
 
 

@@ -166,17 +166,20 @@ ForceSummary ForceField::compute
     }
 
     // Ambient flow at the particles, and per-thread buffers cleared
-    #pragma omp parallel num_threads(nThreads)
     {
-        const int t = omp_get_thread_num();
-        threadF_[t].assign(N, Vec3::Zero());
-        threadT_[t].assign(N, Vec3::Zero());
-        threadS_[t].assign(perParticle ? N : 0, Mat3::Zero());
-
-        #pragma omp for schedule(static)
-        for (std::size_t i = 0; i < N; ++i)
+        ScopedTime timer(times_.flowSampling);
+        #pragma omp parallel num_threads(nThreads)
         {
-            ambient_[i] = flow.sample(p.x[i]);
+            const int t = omp_get_thread_num();
+            threadF_[t].assign(N, Vec3::Zero());
+            threadT_[t].assign(N, Vec3::Zero());
+            threadS_[t].assign(perParticle ? N : 0, Mat3::Zero());
+
+            #pragma omp for schedule(static)
+            for (std::size_t i = 0; i < N; ++i)
+            {
+                ambient_[i] = flow.sample(p.x[i]);
+            }
         }
     }
 
@@ -210,7 +213,11 @@ ForceSummary ForceField::compute
         &ForceField::pairLoop<false, true,  true,  true>,
         &ForceField::pairLoop<true,  true,  true,  true>
     };
-    (this->*loops[active])(p, box, pairs, dt, perParticle, threadSummary);
+    {
+        ScopedTime timer(times_.pairLoop);
+        (this->*loops[active])(p, box, pairs, dt, perParticle, threadSummary);
+    }
+    ScopedTime timer(times_.particleTerms);
 
     // Stokes drag (A.1, 9a) plus the thread buffers, summed in thread order
     ForceSummary summary = threadSummary[0];

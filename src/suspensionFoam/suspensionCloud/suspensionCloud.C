@@ -426,4 +426,32 @@ void Foam::suspensionCloud::evolve()
 }
 
 
+void Foam::suspensionCloud::reportKernelTimes() const
+{
+    const suspension::KernelTimes k = sim_->kernelTimes();
+    const scalar total = k.total();
+    const scalar particleSteps = scalar(sim_->steps())*sim_->particles().size();
+    if (!(total > 0) || !(particleSteps > 0))
+    {
+        return;
+    }
+    Info<< "Kernel times (s, share, ns per particle-step):" << nl;
+    const std::pair<const char*, double> kernels[] =
+    {
+        {"flowSampling", k.flowSampling}, {"pairLoop", k.pairLoop},
+        {"particleTerms", k.particleTerms}, {"search", k.search},
+        {"hydrodynamics", k.hydrodynamics}, {"integration", k.integration}
+    };
+    for (const auto& kernel : kernels)
+    {
+        Info<< "    " << kernel.first << ' ' << kernel.second << ' '
+            << label(100*kernel.second/total + 0.5) << "% "
+            << 1e9*kernel.second/particleSteps << nl;
+    }
+    Info<< "    total " << total << " s over " << label(sim_->steps())
+        << " steps, " << 1e9*total/particleSteps << " ns per particle-step"
+        << nl << endl;
+}
+
+
 // ************************************************************************* //
