@@ -79,7 +79,7 @@ denseFrictional()
 }
 sizeRatio3()
 {
-    hard sizeRatio3 uniformShear/frictional "$(strain 0.2)" population/nParticles=600 \
+    hard sizeRatio3 uniformShear/frictional "$(strain 0.2)" population/nParticles=700 \
         population/sizeRatio=3 population/volumeRatio=0.25
 }
 sizeRatio10()
