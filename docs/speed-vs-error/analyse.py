@@ -10,7 +10,11 @@ CPU seconds per unit strain (one thread; CPU rather than wall time because
 other runs shared the machine).
 model: steady eta_r (block averages after the start-up) against the
 reference parameters eps = 1e-3, delta_lub = 0.05 (Table 1).
-Writes timeStep.csv, model.csv, work-precision.png and prints Markdown.
+meshFlow: U_inf sampled on meshes of n^3 cells against the analytic flow,
+from the same initial condition: errors of the mean eta_r and of the
+particle velocity profile, and the cost.
+Writes timeStep.csv, model.csv, meshFlow.csv, work-precision.png,
+mesh-flow.png and prints Markdown.
 """
 import csv
 import glob
@@ -118,6 +122,46 @@ def model():
     return rows
 
 
+def finalProfile(case):
+    """Ux per y bin at the last write time that has a profile"""
+    files = glob.glob(os.path.join(case, "postProcessing", "profiles", "*", "profiles.dat"))
+    if not files:
+        return None
+    last = max(files, key=lambda f: float(os.path.basename(os.path.dirname(f))))
+    return np.loadtxt(last, comments="#")
+
+
+def meshFlow():
+    """Analytic U_inf against U_inf sampled on meshes: errors of the mean
+    eta_r over the common window and of the particle velocity profile at
+    its end (largest bin difference over the wave amplitude 3.2)"""
+    base = os.path.join(runs, "meshFlow")
+    ref = readRheology(os.path.join(base, "analytic"))
+    refProfile = finalProfile(os.path.join(base, "analytic"))
+    if ref is None or refProfile is None:
+        return []
+    rows = []
+    for d in sorted(glob.glob(os.path.join(base, "*"))):
+        r = readRheology(d)
+        profile = finalProfile(d)
+        if r is None or profile is None:
+            continue
+        common = np.intersect1d(np.round(ref["strain"], 9), np.round(r["strain"], 9))
+        mean = r["etaR"][np.isin(np.round(r["strain"], 9), common)].mean()
+        refMean = ref["etaR"][np.isin(np.round(ref["strain"], 9), common)].mean()
+        label = os.path.basename(d)
+        rows.append({
+            "flow": label, "cells": int(label[5:]) if label.startswith("cells") else 0,
+            "etaR_mean": float(mean), "etaR_error": float(abs(mean - refMean)/refMean),
+            "profile_error": float(np.abs(profile[:, 3] - refProfile[:, 3]).max()/3.2),
+            "window": float(max(common)),
+            "cpu_s_per_strain": cpuSeconds(d)/r["strain"][-1]})
+    rows.sort(key=lambda r: r["cells"])
+    writeCsv("meshFlow.csv", rows, ["flow", "cells", "etaR_mean", "etaR_error",
+                                    "profile_error", "window", "cpu_s_per_strain"])
+    return rows
+
+
 def plot(tsRows, modelRows):
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
     for ax, case in zip(axes, CASES):
@@ -153,10 +197,36 @@ def plot(tsRows, modelRows):
     plt.close(fig)
 
 
+def plotMeshFlow(rows):
+    sel = [r for r in rows if r["cells"] > 0]
+    if not sel:
+        return
+    fig, ax = plt.subplots(figsize=(5.5, 4))
+    cost = [r["cpu_s_per_strain"] for r in sel]
+    ax.loglog(cost, [max(r["etaR_error"], 1e-6) for r in sel], "o-", label=r"$\eta_r$ (mean over the window)")
+    ax.loglog(cost, [max(r["profile_error"], 1e-6) for r in sel], "s-",
+              label=r"particle $u_x$ profile (max over y, / wave amplitude)")
+    for r in sel:
+        ax.annotate(f"{r['cells']}", (r["cpu_s_per_strain"], max(r["profile_error"], 1e-6)),
+                    fontsize=7, xytext=(3, 3), textcoords="offset points")
+    analytic = [r for r in rows if r["cells"] == 0]
+    if analytic:
+        ax.axvline(analytic[0]["cpu_s_per_strain"], color="grey", ls=":", label="analytic $U_\\infty$ (cost)")
+    ax.set_xlabel("CPU seconds per unit strain (1 thread)")
+    ax.set_ylabel("relative error against analytic $U_\\infty$")
+    ax.set_title("wavyShear/small: $U_\\infty$ sampled on n$^3$ cells")
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "mesh-flow.png"), dpi=120)
+    plt.close(fig)
+
+
 def main():
     ts = timeStep()
     mo = model()
+    mf = meshFlow()
     plot(ts, mo)
+    plotMeshFlow(mf)
     print("| case | integrator | safety | dt | mean eta_r (window) | error | CPU s/strain | max overlap | CG its |")
     print("|---|---|---:|---:|---:|---:|---:|---:|---:|")
     for r in sorted(ts, key=lambda r: (r["case"], r["integrator"], r["safety"])):
@@ -170,7 +240,15 @@ def main():
     for r in sorted(mo, key=lambda r: (r["case"], r["parameter"], r["value"])):
         print(f"| {r['case']} | {r['parameter']} | {r['value']:g} | {r['etaR']:.4g} | {r['error_bar']:.2g} | "
               f"{100*r['relative_difference']:+.1f}% | {r['cpu_s_per_strain']:.3g} | {r['strain']:g} |")
+    print()
+    print("| U_inf | cells | mean eta_r (window) | eta_r error | profile error | CPU s/strain |")
+    print("|---|---:|---:|---:|---:|---:|")
+    for r in mf:
+        print(f"| {'analytic' if r['cells'] == 0 else 'meshSampled'} | {r['cells'] or '–'} | "
+              f"{r['etaR_mean']:.4f} | {100*r['etaR_error']:.2f}% | {100*r['profile_error']:.2f}% | "
+              f"{r['cpu_s_per_strain']:.3g} |")
 
 
 if __name__ == "__main__":
     main()
+

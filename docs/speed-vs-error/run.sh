@@ -13,6 +13,10 @@
 #             discretisation from the sampling noise of a chaotic flow.
 #   model     steady eta_r (20 strains frictionless, 8 frictional) for the
 #             model parameters eps (gap regularisation) and delta_lub.
+#   meshFlow  the wavy shear of tutorials/wavyShear/small from the same
+#             initial condition to strain 0.5, with U_inf analytic and with
+#             U_inf sampled on meshes of 8, 16, 32, 64 cells across the box
+#             (ambientFlow type meshSampled).
 # Cases: Table 1 FL and FR at phi = 0.5 with N = 200.
 # Points are OpenFOAM cases under run/speed-vs-error/<mode>/, run by runCase
 # (etc/caseFunctions), restartable; then docs/speed-vs-error/analyse.py.
@@ -29,7 +33,7 @@ export OMP_WAIT_POLICY=PASSIVE
 
 mode=full
 if [ "${1:-}" = "--quick" ]; then mode=quick; shift; fi
-studies=${*:-"timeStep model"}
+studies=${*:-"timeStep model meshFlow"}
 runRoot=${WSF_SPEED_DIR:-$root/run/speed-vs-error}/$mode
 failed=0
 
@@ -95,9 +99,27 @@ model()
     done
 }
 
+meshFlow()
+{
+    local window=0.5 cells="8 16 32 64"
+    if [ $mode = quick ]; then window=0.05; cells="8"; fi
+    local small=$root/tutorials/wavyShear/small n
+    runCase "$runRoot/meshFlow/analytic" "$small" $window 0.01 \
+        integration/integrator=implicitEuler || failed=1
+    for n in $cells; do
+        WSF_CASE_SETUP="foamDictionary -entry ambientFlow -set \
+            '{ type meshSampled; flow { type wavyShear; shearRate 1; amplitude 3.2; periods 1; } }' \
+            constant/suspensionProperties > /dev/null \
+         && sed -i 's/(4 8 4)/($n $n $n)/' system/blockMeshDict \
+         && blockMesh > log.blockMesh 2>&1" \
+        runCase "$runRoot/meshFlow/cells$n" "$small" $window 0.01 \
+            integration/integrator=implicitEuler || failed=1
+    done
+}
+
 for s in $studies; do
     case $s in
-        timeStep|model) $s ;;
+        timeStep|model|meshFlow) $s ;;
         *) echo "run.sh: unknown study '$s'" >&2; exit 2 ;;
     esac
 done

@@ -191,6 +191,7 @@ def shearThickening():
                             "no electro-chemical forces", float("nan"), res))
     if not rows:
         return []
+    rows.sort(key=lambda r: (r["setting"], r["x"]))
     fig, ax = plt.subplots(figsize=(5.5, 4))
     for setting, marker in (("lambda_D=0.045 F^R/F^A=19", "o"), ("lambda_D=0.013 F^R/F^A=1", "s")):
         sel = sorted((r for r in rows if r["setting"] == setting), key=lambda r: r["x"])
@@ -295,11 +296,15 @@ def main():
     tables["shearThickening"] = shearThickening()
     tables["wavy"] = wavy()
     tables["dilute"] = dilute()
+    text = []
     for name, rows in tables.items():
         if rows:
             path = writeCsv(name, rows)
-            print(f"\n### {name} ({os.path.relpath(path, root)})\n")
-            print(markdown(rows, withShares=name != "dilute"))
+            text.append(f"\n### {name} ({os.path.relpath(path, root)})\n")
+            text.append(markdown(rows, withShares=name != "dilute"))
+    print("\n".join(text))
+    with open(os.path.join(out, "tables.md"), "w") as fh:
+        fh.write("<!-- written by docs/validation/analyse.py -->\n" + "\n".join(text) + "\n")
 
 
 if __name__ == "__main__":

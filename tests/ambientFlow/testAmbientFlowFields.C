@@ -1,7 +1,9 @@
 // ambientFlow::writeFields on a blockMesh box: the written Uinf, gradUinf
 // and shearRateInf, read back from disk, hold the analytic values at the cell
-// centres and the boundary face centres.
+// centres and the boundary face centres. The meshSampled flow on such boxes:
+// exact for simple shear, converging at second order for the wavy shear.
 #include "testAmbientFlowTools.H"
+#include "ambientFlowAdapter.H"
 #include "Time.H"
 #include "fvMesh.H"
 #include "volFields.H"
@@ -11,8 +13,13 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <memory>
+#include <random>
 
 using namespace Foam;
+using ambientFlowTest::contains;
+using ambientFlowTest::flowDict;
+using ambientFlowTest::ioErrorOf;
 using ambientFlowTest::makeFlow;
 namespace fs = std::filesystem;
 
@@ -86,9 +93,53 @@ protected:
         }
     }
 
-    void writeDict(const std::string& name, const char* body) const
+    void writeDict(const std::string& name, const std::string& body) const
     {
         std::ofstream(caseDir_/"system"/name) << foamHeader << body;
+    }
+
+    //- Mesh the box with n cells across y (n/2 across x and z) and read it
+    std::unique_ptr<fvMesh> mesh(const Time& runTime, int n) const
+    {
+        std::string dict = blockMeshDict;
+        const std::string cells = "(4 8 2)";
+        dict.replace
+        (
+            dict.find(cells), cells.size(),
+            "(" + std::to_string(n/2) + " " + std::to_string(n) + " "
+          + std::to_string(n/2) + ")"
+        );
+        writeDict("blockMeshDict", dict);
+        const std::string blockMesh =
+            "blockMesh -case '" + caseDir_.string() + "' > '"
+          + (caseDir_/"log.blockMesh").string() + "' 2>&1";
+        EXPECT_EQ(std::system(blockMesh.c_str()), 0)
+            << "see " << (caseDir_/"log.blockMesh");
+        return std::make_unique<fvMesh>
+        (
+            IOobject
+            (
+                fvMesh::defaultRegion,
+                runTime.timeName(),
+                runTime,
+                IOobject::MUST_READ
+            )
+        );
+    }
+
+    //- The case's Time
+    std::unique_ptr<Time> time() const
+    {
+        return std::make_unique<Time>
+        (
+            Time::controlDictName,
+            caseDir_.parent_path().string(),
+            caseDir_.filename().string(),
+            "system",
+            "constant",
+            false,      // no function objects
+            false       // no libraries
+        );
     }
 };
 
@@ -219,4 +270,65 @@ TEST_F(AmbientFlowFields, WrittenFieldsHoldTheAnalyticValues)
     EXPECT_EQ(Uinf.dimensions(), dimVelocity);
     EXPECT_EQ(gradUinf.dimensions(), dimless/dimTime);
     EXPECT_EQ(shearRateInf.dimensions(), dimless/dimTime);
+}
+
+
+TEST_F(AmbientFlowFields, MeshSampledFlowIsExactForShearAndConvergesForTheWave)
+{
+    const std::unique_ptr<Time> runTime = time();
+    const dictionary shear =
+        flowDict("type meshSampled; flow { type uniformShear; shearRate 1.5; }");
+    const dictionary wave = flowDict
+    (
+        "type meshSampled;"
+        " flow { type wavyShear; shearRate 1; amplitude 0.5; periods 1; }"
+    );
+    const autoPtr<ambientFlow> exact
+    (
+        makeFlow("type wavyShear; shearRate 1; amplitude 0.5; periods 1;", box)
+    );
+
+    // Points inside the box, at least 1.5 coarse cells (0.75 of 6/12) from
+    // the walls in y, where the boundary values of the derivatives enter
+    std::mt19937 gen(3);
+    std::uniform_real_distribution<double> u(0, 1);
+    std::vector<point> points;
+    for (int k = 0; k < 50; ++k)
+    {
+        points.push_back(point(4*u(gen), 1.125 + 3.75*u(gen), 2*u(gen)));
+    }
+
+    // Largest errors of U and grad U over the points, n cells across y
+    auto errors = [&](const dictionary& dict, const ambientFlow& reference, int n)
+    {
+        const std::unique_ptr<fvMesh> m = mesh(*runTime, n);
+        const autoPtr<ambientFlow> sampled(ambientFlow::New(dict, box, m.get()));
+        EXPECT_EQ(sampled->shearRate(), reference.shearRate());
+        scalar eU = 0, eGradU = 0;
+        for (const point& p : points)
+        {
+            const suspension::FlowSample f = sampled->sample(p);
+            eU = max(eU, mag(sampled->U(p) - reference.U(p)));
+            eGradU = max(eGradU, mag(sampled->gradU(p) - reference.gradU(p)));
+            EXPECT_LT((f.U - toEigen(sampled->U(p))).norm(), 1e-14);
+        }
+        return std::pair<scalar, scalar>(eU, eGradU);
+    };
+
+    // Simple shear is linear: sampled, differentiated and interpolated exactly
+    const autoPtr<ambientFlow> linear(makeFlow("type uniformShear; shearRate 1.5;", box));
+    const std::pair<scalar, scalar> e0 = errors(shear, linear(), 8);
+    EXPECT_LT(e0.first, 1e-12);
+    EXPECT_LT(e0.second, 1e-12);
+
+    // The wave: second order in the cell size
+    const std::pair<scalar, scalar> e16 = errors(wave, exact(), 16);
+    const std::pair<scalar, scalar> e32 = errors(wave, exact(), 32);
+    EXPECT_GT(e16.first, 1e-6);
+    EXPECT_GT(e16.first/e32.first, 3);
+    EXPECT_GT(e16.second/e32.second, 3);
+
+    // Without a mesh the type refuses, naming why
+    const std::string message = ioErrorOf([&]() { ambientFlow::New(wave, box); });
+    EXPECT_PRED2(contains, message, "samples its flow on the case mesh");
 }

@@ -74,8 +74,13 @@ denseFrictionless()
 }
 denseFrictional()
 {
+    # 2.6% below the frictional jamming point 0.575: eta_r -> O(10^3), and
+    # the default stiffness (k = 4e5) is too soft for such stresses; the
+    # stiff variant shows what a user who follows the advice gets
     hard denseFrictional uniformShear/frictional "$(strain 0.5)" population/nParticles=200 \
         population/volumeFraction=0.56
+    hard denseFrictionalStiff uniformShear/frictional "$(strain 0.5)" population/nParticles=200 \
+        population/volumeFraction=0.56 contact/stiffness=4e6
 }
 sizeRatio3()
 {
@@ -103,8 +108,10 @@ strongAttraction()
 reversingShear()
 {
     # Table 3 YW: script-U = 20 gammaDot a0 over one period, so the local
-    # shear rate 1 + 20 (2 pi/Ly) cos(2 pi y/Ly) changes sign
-    hard reversingShear wavyShear/YW "$(strain 0.1)" population/nParticles=512
+    # shear rate 1 + 20 (2 pi/Ly) cos(2 pi y/Ly) changes sign; 1024 spheres
+    # with the attraction cut at 0.5 a0 (the box holds 3 cut-offs)
+    hard reversingShear wavyShear/YW "$(strain 0.1)" population/nParticles=1024 \
+        electroChemical/attraction/cutoff=0.5
 }
 overlappingStart()
 {

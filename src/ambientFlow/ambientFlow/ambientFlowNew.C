@@ -5,7 +5,8 @@
 Foam::autoPtr<Foam::ambientFlow> Foam::ambientFlow::New
 (
     const dictionary& dict,
-    const vector& box
+    const vector& box,
+    const fvMesh* mesh
 )
 {
     const word flowType(dict.get<word>("type"));
@@ -25,7 +26,7 @@ Foam::autoPtr<Foam::ambientFlow> Foam::ambientFlow::New
         ) << exit(FatalIOError);
     }
 
-    return cstrIter()(dict, box);
+    return cstrIter()(dict, box, mesh);
 }
 
 

@@ -32,7 +32,12 @@ Foam::uniformShear::uniformShear
 {}
 
 
-Foam::uniformShear::uniformShear(const dictionary& dict, const vector& box)
+Foam::uniformShear::uniformShear
+(
+    const dictionary& dict,
+    const vector& box,
+    const fvMesh*
+)
 :
     uniformShear(box, suspension::ShearFlow(dict.get<scalar>("shearRate")))
 {}

@@ -57,7 +57,12 @@ suspension::ShearFlow readWavyShear
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::wavyShear::wavyShear(const dictionary& dict, const vector& box)
+Foam::wavyShear::wavyShear
+(
+    const dictionary& dict,
+    const vector& box,
+    const fvMesh*
+)
 :
     uniformShear(box, readWavyShear(dict, box))
 {}

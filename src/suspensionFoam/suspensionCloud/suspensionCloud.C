@@ -319,7 +319,7 @@ Foam::suspensionCloud::suspensionCloud(Time& runTime, const fvMesh& mesh)
     properties_(mesh),
     restart_(suspensionIO::found(runTime)),
     start_(initialState()),
-    flow_(ambientFlow::New(properties_.ambientFlowDict(), start_.box)),
+    flow_(ambientFlow::New(properties_.ambientFlowDict(), start_.box, &mesh)),
     engineFlow_(*flow_),
     sim_(),
     lastGood_(),
