@@ -1,5 +1,6 @@
 """Reading wavyShearFoam case output for the analysis scripts of docs/:
 the rheology time series joined over restarts, run times, block averages."""
+import csv
 import glob
 import math
 import os
@@ -71,3 +72,13 @@ def meanAndError(blocks):
     if len(blocks) < 2:
         return (float(blocks.mean()) if len(blocks) else float("nan")), float("nan")
     return float(blocks.mean()), float(blocks.std(ddof=1)/math.sqrt(len(blocks)))
+
+
+def writeCsv(path, rows, columns):
+    """rows (dicts) as CSV with a header row; floats to 6 significant digits"""
+    with open(path, "w", newline="") as fh:
+        w = csv.DictWriter(fh, fieldnames=columns)
+        w.writeheader()
+        for r in rows:
+            w.writerow({k: (f"{r[k]:.6g}" if isinstance(r[k], float) else r[k]) for k in columns})
+    return path

@@ -16,7 +16,6 @@ particle velocity profile, and the cost.
 Writes timeStep.csv, model.csv, meshFlow.csv, work-precision.png,
 mesh-flow.png and prints Markdown.
 """
-import csv
 import glob
 import os
 import re
@@ -31,7 +30,7 @@ here = os.path.dirname(os.path.abspath(__file__))
 root = os.path.dirname(os.path.dirname(here))
 sys.path.insert(0, os.path.dirname(here))
 from rheologydata import (blockMeans, cpuSeconds, meanAndError,  # noqa: E402
-                          readRheology, wallSeconds)
+                          readRheology, wallSeconds, writeCsv)
 
 quick = "--quick" in sys.argv
 runs = os.path.join(os.environ.get("WSF_SPEED_DIR", os.path.join(root, "run", "speed-vs-error")),
@@ -42,14 +41,6 @@ os.makedirs(out, exist_ok=True)
 CASES = ("frictionless", "frictional")
 DISCARD = {"frictionless": 5.0, "frictional": 2.0}
 MARKERS = {"implicitEuler": "o", "overdamped": "^", "velocityVerlet": "s"}
-
-
-def writeCsv(name, rows, columns):
-    with open(os.path.join(out, name), "w", newline="") as fh:
-        w = csv.DictWriter(fh, fieldnames=columns)
-        w.writeheader()
-        for r in rows:
-            w.writerow({k: (f"{r[k]:.6g}" if isinstance(r[k], float) else r[k]) for k in columns})
 
 
 def timeStep():
@@ -89,7 +80,7 @@ def timeStep():
     columns = ["case", "integrator", "safety", "dt", "window", "etaR_mean", "reference",
                "relative_error", "cpu_s_per_strain", "wall_s_per_strain", "max_overlap",
                "cg_iterations", "is_reference"]
-    writeCsv("timeStep.csv", rows, columns)
+    writeCsv(os.path.join(out, "timeStep.csv"), rows, columns)
     return rows
 
 
@@ -118,7 +109,7 @@ def model():
     columns = ["case", "parameter", "value", "etaR", "error_bar", "relative_difference",
                "reference_etaR", "reference_error_bar", "cpu_s_per_strain", "strain",
                "discarded_strain"]
-    writeCsv("model.csv", rows, columns)
+    writeCsv(os.path.join(out, "model.csv"), rows, columns)
     return rows
 
 
@@ -157,7 +148,7 @@ def meshFlow():
             "window": float(max(common)),
             "cpu_s_per_strain": cpuSeconds(d)/r["strain"][-1]})
     rows.sort(key=lambda r: r["cells"])
-    writeCsv("meshFlow.csv", rows, ["flow", "cells", "etaR_mean", "etaR_error",
+    writeCsv(os.path.join(out, "meshFlow.csv"), rows, ["flow", "cells", "etaR_mean", "etaR_error",
                                     "profile_error", "window", "cpu_s_per_strain"])
     return rows
 

@@ -24,12 +24,8 @@
 # Threads: OMP_NUM_THREADS (default 1).
 #------------------------------------------------------------------------------
 set -u
-here=$(cd "${0%/*}" && pwd)
-root=$(cd "$here/../.." && pwd)
-. "$root/etc/bashrc" || exit 1
-. "$root/etc/caseFunctions" || exit 1
-export OMP_NUM_THREADS=${OMP_NUM_THREADS:-1}
-export OMP_WAIT_POLICY=PASSIVE
+root=$(cd "${0%/*}/../.." && pwd)
+. "$root/etc/bashrc" && . "$root/etc/caseFunctions" || exit 1
 
 mode=full
 if [ "${1:-}" = "--quick" ]; then mode=quick; shift; fi

@@ -12,7 +12,6 @@ configurations), its error bar the standard error of those block means
 block length is printed). Writes <case>.csv (one row per point, columns
 below), <case>.png and prints the Markdown tables of docs/validation.md.
 """
-import csv
 import glob
 import math
 import os
@@ -28,7 +27,8 @@ import numpy as np
 here = os.path.dirname(os.path.abspath(__file__))
 root = os.path.dirname(os.path.dirname(here))
 sys.path.insert(0, os.path.dirname(here))
-from rheologydata import blockMeans, meanAndError, readRheology, wallSeconds  # noqa: E402
+from rheologydata import (blockMeans, meanAndError, readRheology,  # noqa: E402
+                          wallSeconds, writeCsv)
 quick = "--quick" in sys.argv
 mode = "quick" if quick else "full"
 runs = os.path.join(os.environ.get("WSF_VALIDATION_DIR", os.path.join(root, "run", "validation")), mode)
@@ -107,16 +107,6 @@ def row(caseName, parameter, x, setting, reference, res):
         if k not in values:
             values[k] = res.get(k, float("nan"))
     return values
-
-
-def writeCsv(caseName, rows):
-    path = os.path.join(out, caseName + ".csv")
-    with open(path, "w", newline="") as fh:
-        w = csv.DictWriter(fh, fieldnames=COLUMNS)
-        w.writeheader()
-        for r in rows:
-            w.writerow({k: (f"{v:.6g}" if isinstance(v, float) else v) for k, v in r.items()})
-    return path
 
 
 def markdown(rows, withShares=False):
@@ -299,7 +289,7 @@ def main():
     text = []
     for name, rows in tables.items():
         if rows:
-            path = writeCsv(name, rows)
+            path = writeCsv(os.path.join(out, name + ".csv"), rows, COLUMNS)
             text.append(f"\n### {name} ({os.path.relpath(path, root)})\n")
             text.append(markdown(rows, withShares=name != "dilute"))
     print("\n".join(text))

@@ -16,12 +16,8 @@
 # with the implicit integrator unless named otherwise. --quick: shorter.
 #------------------------------------------------------------------------------
 set -u
-here=$(cd "${0%/*}" && pwd)
-root=$(cd "$here/../.." && pwd)
-. "$root/etc/bashrc" || exit 1
-. "$root/etc/caseFunctions" || exit 1
-export OMP_NUM_THREADS=${OMP_NUM_THREADS:-1}
-export OMP_WAIT_POLICY=PASSIVE
+root=$(cd "${0%/*}/../.." && pwd)
+. "$root/etc/bashrc" && . "$root/etc/caseFunctions" || exit 1
 
 mode=full
 scale=1
