@@ -10,7 +10,8 @@ value is the mean of its block means over all its seeds (initial
 configurations), its error bar the standard error of those block means
 (blocks longer than the stress correlation strain are independent; the
 block length is printed). Writes <case>.csv (one row per point, columns
-below), <case>.png and prints the Markdown tables of docs/validation.md.
+below) and <case>.png, prints the Markdown tables and puts them into
+docs/validation.md between its <!-- table:<case> --> markers.
 """
 import glob
 import math
@@ -287,14 +288,31 @@ def main():
     tables["wavy"] = wavy()
     tables["dilute"] = dilute()
     text = []
+    sections = {}
     for name, rows in tables.items():
         if rows:
             path = writeCsv(os.path.join(out, name + ".csv"), rows, COLUMNS)
-            text.append(f"\n### {name} ({os.path.relpath(path, root)})\n")
-            text.append(markdown(rows, withShares=name != "dilute"))
+            sections[name] = (f"Table written by `docs/validation/analyse.py` from "
+                              f"`{os.path.relpath(path, root)}`:\n\n"
+                              + markdown(rows, withShares=name != "dilute"))
+            text.append(f"\n### {name}\n\n" + sections[name])
     print("\n".join(text))
-    with open(os.path.join(out, "tables.md"), "w") as fh:
-        fh.write("<!-- written by docs/validation/analyse.py -->\n" + "\n".join(text) + "\n")
+    if not quick:
+        fillTables(os.path.join(root, "docs", "validation.md"), sections)
+
+
+def fillTables(path, sections):
+    """Replace what stands between <!-- table:NAME --> and <!-- /table:NAME -->
+    (or after a lone opening marker) by the table of NAME"""
+    doc = open(path).read()
+    for name, table in sections.items():
+        opening, closing = f"<!-- table:{name} -->", f"<!-- /table:{name} -->"
+        if opening not in doc:
+            continue
+        start = doc.index(opening) + len(opening)
+        end = doc.index(closing) if closing in doc else start
+        doc = doc[:start] + "\n" + table + "\n" + closing + doc[end + (len(closing) if closing in doc else 0):]
+    open(path, "w").write(doc)
 
 
 if __name__ == "__main__":

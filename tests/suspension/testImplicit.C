@@ -675,6 +675,58 @@ TEST(Implicit, TangentialContactLimitIncludesLubricationAndIsTheStabilityEdge)
 }
 
 
+TEST(Implicit, LubricationGapBoundsTheImplicitStepForSmallEpsilon)
+{
+    // Frictionless contacts with lubrication: at eps = 1e-4 the contact
+    // limit (which grows as 1/eps with X^A) exceeds the accuracy bound
+    // 25 eps/G, which then binds; it scales with eps/G, and neither the
+    // explicit integrator nor a flow without gradient has it
+    auto models = [](double eps)
+    {
+        ForceModels m;
+        m.contact.emplace(FrictionalContact::fromGroups(4e5, 2.0/7.0, 1e-7, 0.0));
+        m.lubrication.emplace(lubricationParams(eps, 0.05));
+        return m;
+    };
+    auto limit = [](const TimeStepLimits& l, const std::string& name)
+    {
+        for (const TimeStepLimit& t : l.all())
+        {
+            if (t.name == name)
+            {
+                return t.value;
+            }
+        }
+        return -1.0;
+    };
+    const Integrator implicit = Integrator::implicitEuler;
+
+    const TimeStepLimits small(models(1e-4), 1.0, 1.4, rho, 0.2, implicit, 1.0);
+    EXPECT_EQ(small.binding().name, "lubricationGap");
+    EXPECT_DOUBLE_EQ(small.binding().value, 25*1e-4);
+    EXPECT_GT(limit(small, "contact"), small.binding().value);
+
+    const TimeStepLimits wavy(models(1e-4), 1.0, 1.4, rho, 0.2, implicit, 4.0);
+    EXPECT_DOUBLE_EQ(limit(wavy, "lubricationGap"), 25*1e-4/4);
+
+    // At the paper's eps = 1e-3 the contact limit still binds (unchanged
+    // Table 1 steps)
+    const TimeStepLimits paper(models(1e-3), 1.0, 1.4, rho, 0.2, implicit, 1.0);
+    EXPECT_EQ(paper.binding().name, "contact");
+
+    EXPECT_EQ(limit(TimeStepLimits(models(1e-4), 1.0, 1.4, rho, 0.2, implicit, 0.0), "lubricationGap"), -1.0);
+    EXPECT_EQ
+    (
+        limit
+        (
+            TimeStepLimits(models(1e-4), 1.0, 1.4, rho, 0.2, Integrator::velocityVerlet, 1.0),
+            "lubricationGap"
+        ),
+        -1.0
+    );
+}
+
+
 TEST(Implicit, AdaptiveStepsBoundTheDisplacementAndLandOnTheInterval)
 {
     // A lone sphere in the wavy flow, overdamped, no explicit force: no

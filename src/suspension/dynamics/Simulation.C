@@ -14,6 +14,7 @@ namespace
     (
         const ForceModels& models,
         const Particles& p,
+        const AmbientFlow& flow,
         const Simulation::Params& params
     )
     {
@@ -24,7 +25,8 @@ namespace
         const auto [aMin, aMax] = std::minmax_element(p.a.begin(), p.a.end());
         return TimeStepLimits
         (
-            models, *aMin, *aMax, params.rho, params.safety, params.integrator
+            models, *aMin, *aMax, params.rho, params.safety, params.integrator,
+            flow.maxVelocityGradient()
         );
     }
 }
@@ -50,7 +52,7 @@ Simulation::Simulation
         params.skin,
         params.stencil
     }),
-    limits_(makeLimits(forces_.models(), particles_, params)),
+    limits_(makeLimits(forces_.models(), particles_, flow, params)),
     dtMax_(params.deltaT > 0 ? params.deltaT : limits_.deltaT()),
     aMin_(*std::min_element(particles_.a.begin(), particles_.a.end())),
     time_(0),

@@ -177,7 +177,8 @@ TimeStepLimits::TimeStepLimits
     double aMax,
     double rho,
     double safety,
-    Integrator integrator
+    Integrator integrator,
+    double maxVelocityGradient
 )
 :
     safety_(safety)
@@ -268,6 +269,14 @@ TimeStepLimits::TimeStepLimits
         addLimit("lubrication", [&](double ai, double aj)
         {
             return 2*pairRelaxationTime(models, ai, aj, rho);
+        });
+    }
+    if (models.lubrication && !explicitHydrodynamics && maxVelocityGradient > 0)
+    {
+        limits_.push_back
+        ({
+            "lubricationGap",
+            25*models.lubrication->params().epsilon/maxVelocityGradient
         });
     }
     if (models.contact)
