@@ -16,7 +16,10 @@ def readRheology(case):
     if empty"""
     rows = {}
     common = None
-    for f in glob.glob(os.path.join(case, "postProcessing", "rheology", "*", "rheology.dat")):
+    # A run restarted at the same start time writes rheology_<start>.dat
+    # next to the file of the stopped run: read both, the later last
+    files = glob.glob(os.path.join(case, "postProcessing", "rheology", "*", "rheology*.dat"))
+    for f in sorted(files, key=lambda f: (os.path.dirname(f), len(f), f)):
         header = None
         with open(f) as fh:
             for line in fh:
@@ -82,3 +85,17 @@ def writeCsv(path, rows, columns):
         for r in rows:
             w.writerow({k: (f"{r[k]:.6g}" if isinstance(r[k], float) else r[k]) for k in columns})
     return path
+
+
+def fillTables(path, sections):
+    """Replace what stands between <!-- table:NAME --> and <!-- /table:NAME -->
+    (or after a lone opening marker) by the table of NAME"""
+    doc = open(path).read()
+    for name, table in sections.items():
+        opening, closing = f"<!-- table:{name} -->", f"<!-- /table:{name} -->"
+        if opening not in doc:
+            continue
+        start = doc.index(opening) + len(opening)
+        end = doc.index(closing) if closing in doc else start
+        doc = doc[:start] + "\n" + table + "\n" + closing + doc[end + (len(closing) if closing in doc else 0):]
+    open(path, "w").write(doc)

@@ -29,8 +29,8 @@ import numpy as np
 here = os.path.dirname(os.path.abspath(__file__))
 root = os.path.dirname(os.path.dirname(here))
 sys.path.insert(0, os.path.dirname(here))
-from rheologydata import (blockMeans, cpuSeconds, meanAndError,  # noqa: E402
-                          readRheology, wallSeconds, writeCsv)
+from rheologydata import (blockMeans, cpuSeconds, fillTables,  # noqa: E402
+                          meanAndError, readRheology, wallSeconds, writeCsv)
 
 quick = "--quick" in sys.argv
 runs = os.path.join(os.environ.get("WSF_SPEED_DIR", os.path.join(root, "run", "speed-vs-error")),
@@ -212,34 +212,44 @@ def plotMeshFlow(rows):
     plt.close(fig)
 
 
+def tables(ts, mo, mf):
+    """The three Markdown tables of docs/speed-vs-error.md"""
+    t = ["| case | integrator | safety | Δt | mean ηr (window) | error | CPU s/strain | max overlap | CG its |",
+         "|---|---|---:|---:|---:|---:|---:|---:|---:|"]
+    for r in sorted(ts, key=lambda r: (r["case"], r["integrator"], r["safety"])):
+        error = "reference" if r["is_reference"] else f"{100*r['relative_error']:.2f}%"
+        cg = "–" if np.isnan(r["cg_iterations"]) else f"{r['cg_iterations']:.0f}"
+        t.append(f"| {r['case']} | {r['integrator']} | {r['safety']:g} | {r['dt']:.3g} | "
+                 f"{r['etaR_mean']:.4f} | {error} | {r['cpu_s_per_strain']:.3g} | "
+                 f"{r['max_overlap']:.2g} | {cg} |")
+    m = ["| case | parameter | value | ηr | ± | difference to ε = 10⁻³, δ_lub = 0.05 | CPU s/strain | strain |",
+         "|---|---|---:|---:|---:|---:|---:|---:|"]
+    for r in sorted(mo, key=lambda r: (r["case"], r["parameter"], r["value"])):
+        m.append(f"| {r['case']} | {r['parameter']} | {r['value']:g} | {r['etaR']:.4g} | {r['error_bar']:.2g} | "
+                 f"{100*r['relative_difference']:+.1f}% | {r['cpu_s_per_strain']:.3g} | {r['strain']:g} |")
+    f = ["| U∞ | cells | mean ηr (window) | ηr error | profile error | CPU s/strain |",
+         "|---|---:|---:|---:|---:|---:|"]
+    for r in mf:
+        f.append(f"| {'analytic' if r['cells'] == 0 else 'meshSampled'} | {r['cells'] or '–'} | "
+                 f"{r['etaR_mean']:.4f} | {100*r['etaR_error']:.2f}% | {100*r['profile_error']:.2f}% | "
+                 f"{r['cpu_s_per_strain']:.3g} |")
+    note = "Table written by `docs/speed-vs-error/analyse.py` from `docs/speed-vs-error/{}.csv`:\n\n"
+    return {"timeStep": note.format("timeStep") + "\n".join(t),
+            "model": note.format("model") + "\n".join(m),
+            "meshFlow": note.format("meshFlow") + "\n".join(f)}
+
+
 def main():
     ts = timeStep()
     mo = model()
     mf = meshFlow()
     plot(ts, mo)
     plotMeshFlow(mf)
-    print("| case | integrator | safety | dt | mean eta_r (window) | error | CPU s/strain | max overlap | CG its |")
-    print("|---|---|---:|---:|---:|---:|---:|---:|---:|")
-    for r in sorted(ts, key=lambda r: (r["case"], r["integrator"], r["safety"])):
-        error = "reference" if r["is_reference"] else f"{100*r['relative_error']:.2f}%"
-        print(f"| {r['case']} | {r['integrator']} | {r['safety']:g} | {r['dt']:.3g} | "
-              f"{r['etaR_mean']:.4f} | {error} | "
-              f"{r['cpu_s_per_strain']:.3g} | {r['max_overlap']:.2g} | {r['cg_iterations']:.0f} |")
-    print()
-    print("| case | parameter | value | eta_r | ± | difference to eps 1e-3, delta 0.05 | CPU s/strain | strain |")
-    print("|---|---|---:|---:|---:|---:|---:|---:|")
-    for r in sorted(mo, key=lambda r: (r["case"], r["parameter"], r["value"])):
-        print(f"| {r['case']} | {r['parameter']} | {r['value']:g} | {r['etaR']:.4g} | {r['error_bar']:.2g} | "
-              f"{100*r['relative_difference']:+.1f}% | {r['cpu_s_per_strain']:.3g} | {r['strain']:g} |")
-    print()
-    print("| U_inf | cells | mean eta_r (window) | eta_r error | profile error | CPU s/strain |")
-    print("|---|---:|---:|---:|---:|---:|")
-    for r in mf:
-        print(f"| {'analytic' if r['cells'] == 0 else 'meshSampled'} | {r['cells'] or '–'} | "
-              f"{r['etaR_mean']:.4f} | {100*r['etaR_error']:.2f}% | {100*r['profile_error']:.2f}% | "
-              f"{r['cpu_s_per_strain']:.3g} |")
+    sections = tables(ts, mo, mf)
+    print("\n\n".join(sections.values()))
+    if not quick:
+        fillTables(os.path.join(root, "docs", "speed-vs-error.md"), sections)
 
 
 if __name__ == "__main__":
     main()
-

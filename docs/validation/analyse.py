@@ -28,8 +28,8 @@ import numpy as np
 here = os.path.dirname(os.path.abspath(__file__))
 root = os.path.dirname(os.path.dirname(here))
 sys.path.insert(0, os.path.dirname(here))
-from rheologydata import (blockMeans, meanAndError, readRheology,  # noqa: E402
-                          wallSeconds, writeCsv)
+from rheologydata import (blockMeans, fillTables, meanAndError,  # noqa: E402
+                          readRheology, wallSeconds, writeCsv)
 quick = "--quick" in sys.argv
 mode = "quick" if quick else "full"
 runs = os.path.join(os.environ.get("WSF_VALIDATION_DIR", os.path.join(root, "run", "validation")), mode)
@@ -299,20 +299,6 @@ def main():
     print("\n".join(text))
     if not quick:
         fillTables(os.path.join(root, "docs", "validation.md"), sections)
-
-
-def fillTables(path, sections):
-    """Replace what stands between <!-- table:NAME --> and <!-- /table:NAME -->
-    (or after a lone opening marker) by the table of NAME"""
-    doc = open(path).read()
-    for name, table in sections.items():
-        opening, closing = f"<!-- table:{name} -->", f"<!-- /table:{name} -->"
-        if opening not in doc:
-            continue
-        start = doc.index(opening) + len(opening)
-        end = doc.index(closing) if closing in doc else start
-        doc = doc[:start] + "\n" + table + "\n" + closing + doc[end + (len(closing) if closing in doc else 0):]
-    open(path, "w").write(doc)
 
 
 if __name__ == "__main__":

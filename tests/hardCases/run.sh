@@ -120,9 +120,9 @@ overlappingStart()
 }
 longRun()
 {
-    # 10^6 steps (dt ~ 1e-4) of the frictional case with 100 particles
+    # 10^6 steps (dt = 1.03e-4) of the frictional case with 100 particles
     local name=longRun dir=$runRoot/longRun end
-    end=$(strain 100)
+    end=$(strain 103)
     runCase "$dir" "$tutorials/uniformShear/frictional" "$end" 0.1 \
         integration/integrator=implicitEuler population/nParticles=100 > /dev/null
     check "$name" "$dir" "$end"
