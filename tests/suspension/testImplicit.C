@@ -516,8 +516,12 @@ TEST(Implicit, DiluteViscosityAgreesWithVelocityVerlet)
 
 TEST(Implicit, IndependentOfThreadCount)
 {
-    // Random box with overlaps and every force model, a few implicit steps
-    const Vec3 L(12, 12, 12);
+    // Random box with overlaps and every force model, a few implicit steps;
+    // more particles than solverParallelMinParticles, so that the
+    // conjugate-gradient loops run on two threads too
+    const std::size_t N = solverParallelMinParticles + 100;
+    const double side = 12*std::cbrt(N/300.0);
+    const Vec3 L(side, side, side);
     const ShearFlow flow(1.0, 2.0, 1.0, L.y());
     ForceModels models;
     models.lubrication.emplace(lubricationParams(1e-3, 0.25));
@@ -527,7 +531,7 @@ TEST(Implicit, IndependentOfThreadCount)
     std::mt19937 gen(2);
     std::uniform_real_distribution<double> u(0, 1);
     Particles start;
-    for (int i = 0; i < 300; ++i)
+    for (std::size_t i = 0; i < N; ++i)
     {
         start.add(Vec3(u(gen), u(gen), u(gen)).cwiseProduct(L), (i % 2) ? 1.4 : 1.0, rho, i);
     }

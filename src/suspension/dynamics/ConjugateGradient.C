@@ -1,4 +1,5 @@
 #include "dynamics/ConjugateGradient.H"
+#include "core/Parallel.H"
 
 #include <algorithm>
 #include <stdexcept>
@@ -10,8 +11,9 @@ namespace suspension
 
 namespace
 {
-    //- Entries per block of the parallel vector operations; a vector of
-    //  one block is done on one thread
+    //- Entries per block of the parallel vector operations (6 per
+    //  particle); vectors of fewer particles than solverParallelMinParticles
+    //  are done on one thread
     constexpr Eigen::Index blockSize = 1024;
 
     Eigen::Index nBlocks(Eigen::Index n)
@@ -24,7 +26,9 @@ namespace
     void forBlocks(Eigen::Index n, F f)
     {
         const Eigen::Index nb = nBlocks(n);
-        #pragma omp parallel for schedule(static) if(nb > 1)
+        const bool parallel =
+            n >= Eigen::Index(6*solverParallelMinParticles) && nb > 1;
+        #pragma omp parallel for schedule(static) if(parallel)
         for (Eigen::Index k = 0; k < nb; ++k)
         {
             const Eigen::Index start = k*blockSize;

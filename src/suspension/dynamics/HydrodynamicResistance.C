@@ -266,7 +266,7 @@ void HydrodynamicResistance::apply(const Vector& x, Vector& y) const
     const std::size_t N = translation_.size();
     y.resize(6*N);
 
-    #pragma omp parallel if(N >= parallelMinParticles)
+    #pragma omp parallel if(N >= solverParallelMinParticles)
     {
         // Pass 1: diagonal, rows of i; rows of j into pairRows_
         #pragma omp for schedule(static)
@@ -305,7 +305,7 @@ void HydrodynamicResistance::precondition(const Vector& r, Vector& z) const
     const std::size_t N = inverseA_.size();
     z.resize(6*N);
 
-    #pragma omp parallel for schedule(static) if(N >= parallelMinParticles)
+    #pragma omp parallel for schedule(static) if(N >= solverParallelMinParticles)
     for (std::size_t i = 0; i < N; ++i)
     {
         z.segment<6>(6*i) = inverseA_[i]*r.segment<6>(6*i);
