@@ -141,8 +141,10 @@ void Foam::suspensionCloud::removeInitialOverlaps
                 << " configuration is written at the first write time" << nl;
         }
     }
-    catch (const suspension::PackingError& err)
+    catch (const std::exception& err)
     {
+        // PackingError (they jam), or a box too small for the relaxation's
+        // neighbour search
         FatalIOErrorInFunction(start_.file)
             << "The spheres stored in " << start_.file << " overlap and"
             << " cannot be separated in their box: " << err.what() << nl
