@@ -43,7 +43,7 @@ namespace
 
         explicit RandomBox(unsigned seed)
         {
-            models.lubrication.emplace(lubricationParams(1e-3, 0.5));
+            models.set(Lubrication(lubricationParams(1e-3, 0.5)));
             box.setTime(0.37);
             std::mt19937 gen(seed);
             std::uniform_real_distribution<double> u(0, 1);
@@ -56,7 +56,7 @@ namespace
                 p.F.back() = Vec3(u(gen), u(gen), u(gen)) - Vec3::Constant(0.5);
                 p.T.back() = Vec3(u(gen), u(gen), u(gen)) - Vec3::Constant(0.5);
             }
-            NeighbourSearch search({models.interactionGap(1.4, 1.4), 0.1});
+            NeighbourSearch search({models.interactionGap(), 0.1});
             search.rebuild(p, box, pairs);
             for (const Vec3& x : p.x)
             {
@@ -93,7 +93,7 @@ namespace
                     Vec3 r = p.x[j] - p.x[i];
                     box.minimumImage(r);
                     const PairGeometry g = PairGeometry::make(r, p.a[i], p.a[j]);
-                    if (g.dist < models.lubrication->range(g.ai, g.aj))
+                    if (g.h < models.get<Lubrication>()->gap())
                     {
                         f(i, j, g);
                     }
@@ -118,7 +118,7 @@ namespace
             forLubricatedPairs([&](int i, int j, const PairGeometry& g)
             {
                 const Lubrication::PairMatrix R =
-                    models.lubrication->resistanceMatrix(g);
+                    models.get<Lubrication>()->resistanceMatrix(g);
                 const std::array<int, 12> k = pairIndex(i, j);
                 for (int r = 0; r < 12; ++r)
                     for (int c = 0; c < 12; ++c)
@@ -140,7 +140,7 @@ namespace
             forLubricatedPairs([&](int i, int j, const PairGeometry& g)
             {
                 const Lubrication::PairVector fE =
-                    models.lubrication->strainForces(g, ambient[i].E(), ambient[j].E());
+                    models.get<Lubrication>()->strainForces(g, ambient[i].E(), ambient[j].E());
                 const std::array<int, 12> k = pairIndex(i, j);
                 for (int r = 0; r < 12; ++r)
                     F(k[r]) += fE(r);
@@ -200,7 +200,7 @@ namespace
         Particles p;
         p.add(Vec3(9, 10, 10), 1.0, rho, 0);
         p.add(Vec3(11 + h0, 10, 10), 1.0, rho, 1);
-        ForceField forces(models);
+        ForceField forces(models, p.a);
         ImplicitEuler implicit(models, inertia, ConjugateGradient::Params());
         NeighbourSearch search({1.0, 0.5});
         PairList pairs;
@@ -208,9 +208,9 @@ namespace
 
         auto evaluate = [&](double dtContact, double shear)
         {
-            ForceSummary summary = forces.compute
+            ForceSummary summary = forces.advance
             (
-                p, box, flow, pairs, dtContact, nullptr,
+                p, box, flow, pairs, search.far(), dtContact,
                 ForceField::Forces::nonHydrodynamic
             );
             const Vec3 n = (p.x[1] - p.x[0]).normalized();
@@ -261,7 +261,7 @@ namespace
 TEST(Implicit, MatrixFreeProductEqualsDenseAssembly)
 {
     RandomBox s(3);
-    HydrodynamicResistance R(s.models.drag, s.models.lubrication);
+    HydrodynamicResistance R(s.models.drag, s.models.get<Lubrication>());
     R.assemble(s.p, s.box, s.ambient, s.pairs);
     ASSERT_GT(R.nPairs(), 20u);
 
@@ -310,10 +310,11 @@ TEST(Implicit, ResistanceGivesTheForcesAndStressOfTheExplicitPairLoop)
 
     Particles q = s.p;
     PairList pairs = s.pairs;
-    ForceField forces(s.models);
-    const ForceSummary explicitSummary = forces.compute(q, s.box, s.flow, pairs, 0);
+    ForceField forces(s.models, q.a);
+    const ForceSummary explicitSummary =
+        forces.advance(q, s.box, s.flow, pairs, PairList(), 0);
 
-    HydrodynamicResistance R(s.models.drag, s.models.lubrication);
+    HydrodynamicResistance R(s.models.drag, s.models.get<Lubrication>());
     R.assemble(s.p, s.box, s.ambient, s.pairs);
     R.setInertia(s.p, 0);
     Eigen::VectorXd RV;
@@ -322,10 +323,11 @@ TEST(Implicit, ResistanceGivesTheForcesAndStressOfTheExplicitPairLoop)
     const Eigen::VectorXd Fexplicit = s.stack(q.F, q.T, false);
     EXPECT_LT((F - Fexplicit).norm(), 1e-12*Fexplicit.norm());
 
-    for (const int c : {stokes, lubrication})
+    for (const char* name : {"stokes", "lubrication"})
     {
+        const int c = contributionIndex(name);
         const Mat3& S = explicitSummary.stresslet[c];
-        EXPECT_LT((summary.stresslet[c] - S).norm(), 1e-12*S.norm()) << contributionName(c);
+        EXPECT_LT((summary.stresslet[c] - S).norm(), 1e-12*S.norm()) << name;
     }
 }
 
@@ -372,7 +374,7 @@ TEST(Implicit, SqueezeIsStableFarBeyondTheExplicitLimitAndFollowsTheOde)
     // Two spheres pushed together by +-F against Stokes drag and the
     // regularised squeeze resistance, at 100 times the explicit limit
     ForceModels models;
-    models.lubrication.emplace(lubricationParams(1e-3, 0.5));
+    models.set(Lubrication(lubricationParams(1e-3, 0.5)));
     const TimeStepLimits explicitLimits(models, 1.0, 1.0, rho, 1.0);
     ASSERT_EQ(explicitLimits.binding().name, "lubrication");
     const double dt = 100*explicitLimits.binding().value;
@@ -387,7 +389,7 @@ TEST(Implicit, SqueezeIsStableFarBeyondTheExplicitLimitAndFollowsTheOde)
     auto zeta = [&](double h)
     {
         const LubricationCoefficients c =
-            models.lubrication->coefficients(PairGeometry::make(Vec3(2 + h, 0, 0), 1, 1));
+            models.get<Lubrication>()->coefficients(PairGeometry::make(Vec3(2 + h, 0, 0), 1, 1));
         return 6*pi + c.XA.jj - c.XA.ji;
     };
     const double m = 4.0/3.0*pi*rho;
@@ -451,7 +453,7 @@ TEST(Implicit, LoneSphereInWavyFlowMovesWithFaxenVelocity)
     const ShearFlow flow(1.0, 3.0, 1.0, L.y());
     const double a = 1.2;
     ForceModels models;
-    models.contact.emplace(FrictionalContact::fromGroups(4e5, 2.0/7.0, 1e-7, 1.0));
+    models.set(FrictionalContact(FrictionalContact::fromGroups(4e5, 2.0/7.0, 1e-7, 1.0)));
 
     for (const Integrator integrator : {Integrator::implicitEuler, Integrator::overdamped})
     {
@@ -486,8 +488,8 @@ TEST(Implicit, DiluteViscosityAgreesWithVelocityVerlet)
     pp.seed = 3;
     const RandomPacking::Result packed = RandomPacking(pp).pack(radii, rho);
     ForceModels models;
-    models.lubrication.emplace(lubricationParams(1e-2, 0.25));
-    models.contact.emplace(FrictionalContact::fromGroups(4e5, 2.0/7.0, 1e-7, 1.0));
+    models.set(Lubrication(lubricationParams(1e-2, 0.25)));
+    models.set(FrictionalContact(FrictionalContact::fromGroups(4e5, 2.0/7.0, 1e-7, 1.0)));
 
     const ShearFlow flow(1.0);
     std::vector<Rheology> result;
@@ -505,6 +507,7 @@ TEST(Implicit, DiluteViscosityAgreesWithVelocityVerlet)
         result.push_back(sim.rheology());
     }
     EXPECT_NEAR(result[1].etaR, result[0].etaR, 0.01*result[0].etaR);
+    const int lubrication = contributionIndex("lubrication");
     EXPECT_GT(result[0].etaRPart[lubrication], 0.01);
     EXPECT_NEAR
     (
@@ -517,17 +520,17 @@ TEST(Implicit, DiluteViscosityAgreesWithVelocityVerlet)
 TEST(Implicit, IndependentOfThreadCount)
 {
     // Random box with overlaps and every force model, a few implicit steps;
-    // more particles than solverParallelMinParticles, so that the
-    // conjugate-gradient loops run on two threads too
-    const std::size_t N = solverParallelMinParticles + 100;
+    // more particles than parallelMinParticles(), so that every loop runs
+    // on two threads too
+    const std::size_t N = parallelMinParticles() + 100;
     const double side = 12*std::cbrt(N/300.0);
     const Vec3 L(side, side, side);
     const ShearFlow flow(1.0, 2.0, 1.0, L.y());
     ForceModels models;
-    models.lubrication.emplace(lubricationParams(1e-3, 0.25));
+    models.set(Lubrication(lubricationParams(1e-3, 0.25)));
     FrictionalContact::Params c = FrictionalContact::fromGroups(4e5, 2.0/7.0, 1e-7, 1.0);
     c.kr = 0.1*c.kn;
-    models.contact.emplace(c);
+    models.set(FrictionalContact(c));
     std::mt19937 gen(2);
     std::uniform_real_distribution<double> u(0, 1);
     Particles start;
@@ -573,16 +576,16 @@ TEST(Implicit, ContactStepLimitIsTheStabilityEdge)
     // lubrication; and frictionless with lubrication, where the normal mode
     // sees X^A at the regularised gap and the limit is ~100 times larger.
     ForceModels frictional;
-    frictional.contact.emplace(FrictionalContact::fromGroups(4e5, 2.0/7.0, 1e-7, 1.0));
+    frictional.set(FrictionalContact(FrictionalContact::fromGroups(4e5, 2.0/7.0, 1e-7, 1.0)));
     ForceModels lubricated;
-    lubricated.contact.emplace(FrictionalContact::fromGroups(4e5, 2.0/7.0, 1e-7, 0.0));
+    lubricated.set(FrictionalContact(FrictionalContact::fromGroups(4e5, 2.0/7.0, 1e-7, 0.0)));
     Lubrication::Params lub;
     lub.epsilon = 1e-3;
     lub.deltaLub = 0.05;
-    lubricated.lubrication.emplace(lub);
+    lubricated.set(Lubrication(lub));
 
     const double F = 100;
-    const double overlap = F/frictional.contact->params().kn;
+    const double overlap = F/frictional.get<FrictionalContact>()->params().kn;
     const double frictionalLimit =
         TimeStepLimits(frictional, 1.0, 1.0, rho, 1.0, Integrator::overdamped).binding().value;
 
@@ -610,7 +613,7 @@ TEST(Implicit, ContactStepLimitIsTheStabilityEdge)
         };
         EXPECT_LT(deviation(0.9), 0.1*overlap);
         EXPECT_GT(deviation(1.1), overlap);
-        if (models.lubrication)
+        if (models.get<Lubrication>())
         {
             EXPECT_GT(limits.binding().value, 100*frictionalLimit);
         }
@@ -628,13 +631,13 @@ TEST(Implicit, TangentialContactLimitIncludesLubricationAndIsTheStabilityEdge)
     // below it and grows just above (measured: 10x the dry limit
     // overdamped, 3x with inertia, for eps = 1e-3).
     ForceModels models;
-    models.contact.emplace(FrictionalContact::fromGroups(4e5, 2.0/7.0, 1e-7, 1.0));
-    models.lubrication.emplace(lubricationParams(1e-3, 0.05));
+    models.set(FrictionalContact(FrictionalContact::fromGroups(4e5, 2.0/7.0, 1e-7, 1.0)));
+    models.set(Lubrication(lubricationParams(1e-3, 0.05)));
     ForceModels dry;
-    dry.contact = models.contact;
+    dry.set(*models.get<FrictionalContact>());
 
     const double F = 100;
-    const double overlap = F/models.contact->params().kn;
+    const double overlap = F/models.get<FrictionalContact>()->params().kn;
     for (const Integrator integrator : {Integrator::overdamped, Integrator::implicitEuler})
     {
         const TimeStepLimits limits(models, 1.0, 1.0, rho, 1.0, integrator);
@@ -688,8 +691,8 @@ TEST(Implicit, LubricationGapBoundsTheImplicitStepForSmallEpsilon)
     auto models = [](double eps)
     {
         ForceModels m;
-        m.contact.emplace(FrictionalContact::fromGroups(4e5, 2.0/7.0, 1e-7, 0.0));
-        m.lubrication.emplace(lubricationParams(eps, 0.05));
+        m.set(FrictionalContact(FrictionalContact::fromGroups(4e5, 2.0/7.0, 1e-7, 0.0)));
+        m.set(Lubrication(lubricationParams(eps, 0.05)));
         return m;
     };
     auto limit = [](const TimeStepLimits& l, const std::string& name)

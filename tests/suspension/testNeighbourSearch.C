@@ -2,6 +2,7 @@
 // under Lees-Edwards boundaries, the Verlet skin and the contact history
 #include "flow/ShearFlow.H"
 #include "search/NeighbourSearch.H"
+#include "core/Parallel.H"
 
 #include <gtest/gtest.h>
 
@@ -31,7 +32,26 @@ namespace
     PairSet idPairs(const Particles& p, const PairList& list)
     {
         EXPECT_EQ(list.nParticles(), p.size());
-        EXPECT_EQ(list.history.size(), list.nPairs());
+        // A cell search gives no history; the neighbour search's near list
+        // one per slot, and a transposed index that holds every slot once
+        // under its partner, in slot order
+        EXPECT_TRUE(list.history.empty() || list.history.size() == list.nPairs());
+        if (!list.slotT.empty())
+        {
+            EXPECT_EQ(list.slotT.size(), list.nPairs());
+            std::vector<int> seen(list.nPairs(), 0);
+            for (std::size_t j = 0; j < list.nParticles(); ++j)
+            {
+                for (std::uint32_t t = list.offsetT[j]; t < list.offsetT[j + 1]; ++t)
+                {
+                    const std::uint32_t k = list.slotT[t];
+                    EXPECT_EQ(list.j[k], j);
+                    EXPECT_TRUE(t == list.offsetT[j] || list.slotT[t - 1] < k);
+                    ++seen[k];
+                }
+            }
+            EXPECT_EQ(std::count(seen.begin(), seen.end(), 1), long(list.nPairs()));
+        }
         PairSet pairs;
         for (std::size_t i = 0; i < list.nParticles(); ++i)
         {
@@ -257,7 +277,7 @@ TEST(CellList, ListIndependentOfThreadCount)
     LeesEdwardsBox box(L, 1);
     box.setOffset(4.321);
     std::uniform_real_distribution<double> radius(1.0, 1.4);
-    Particles p = randomParticles(L, searchParallelMin + 400, radius, gen);
+    Particles p = randomParticles(L, parallelMinParticles() + 400, radius, gen);
     CellList cells(box, 2*1.4 + 0.2);
     p.permute(cells.sort(p.x));
 

@@ -137,15 +137,21 @@ namespace
             }
             else if (a == "-off")
             {
+                // a stress contribution (every model of it) or "rolling"
                 const std::string m = value();
+                const std::vector<std::string>& names = contributionNames();
                 if
                 (
-                    m != "lubrication" && m != "contact" && m != "rolling"
-                 && m != "repulsion" && m != "attraction"
+                    m != "rolling"
+                 && (m == "stokes" || std::find(names.begin(), names.end(), m) == names.end())
                 )
                 {
-                    std::cerr << "suspensionBenchmark: -off takes lubrication,"
-                        " contact, rolling, repulsion or attraction, not " << m << "\n";
+                    std::cerr << "suspensionBenchmark: -off takes rolling or one of";
+                    for (std::size_t c = 1; c < names.size(); ++c)
+                    {
+                        std::cerr << " " << names[c];
+                    }
+                    std::cerr << ", not " << m << "\n";
                     std::exit(2);
                 }
                 o.off.push_back(m);
@@ -175,7 +181,7 @@ namespace
             Lubrication::Params lub;
             lub.epsilon = 1e-3;
             lub.deltaLub = t3 ? 0.25 : 0.05;
-            m.lubrication.emplace(lub);
+            m.set(Lubrication(lub));
         }
         if (o.on("contact"))
         {
@@ -185,20 +191,20 @@ namespace
             {
                 c.kr = 0.1*c.kn;
             }
-            m.contact.emplace(c);
+            m.set(FrictionalContact(c));
         }
         if (t3)
         {
             const ElectroChemicalScales scales({1.0, 19.0, 0.01});
             if (o.on("repulsion"))
             {
-                m.repulsion.emplace(scales.repulsion(0.02));
+                m.set(ElectrostaticRepulsion(scales.repulsion(0.02)));
             }
             if (o.on("attraction"))
             {
                 VanDerWaalsAttraction::Params att = scales.attraction();
                 att.cutoffGap = o.attractionCutoff;
-                m.attraction.emplace(att);
+                m.set(VanDerWaalsAttraction(att));
             }
         }
         return m;
@@ -264,7 +270,9 @@ int main(int argc, char** argv)
     {
         Particles p = sim.particles();
         PairList list = sim.pairs();
-        NeighbourSearch search({sim.search().params().gap, sim.search().params().skin, stencil});
+        NeighbourSearch::Params sp = sim.search().params();
+        sp.stencil = stencil;
+        NeighbourSearch search(sp);
         return medianTime(stencil == Stencil::bruteForce ? 1 : 5, [&]()
         {
             search.rebuild(p, sim.box(), list);

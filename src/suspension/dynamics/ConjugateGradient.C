@@ -11,10 +11,10 @@ namespace suspension
 
 namespace
 {
-    //- Entries per block of the parallel vector operations (6 per
-    //  particle); vectors of fewer particles than solverParallelMinParticles
-    //  are done on one thread
-    constexpr Eigen::Index blockSize = 1024;
+    //- Entries per block of the ordered reductions (6 per particle,
+    //  core/Parallel.H); vectors of fewer than parallelMinParticles()
+    //  particles are done on one thread
+    constexpr Eigen::Index blockSize = 6*reductionBlock;
 
     Eigen::Index nBlocks(Eigen::Index n)
     {
@@ -26,8 +26,7 @@ namespace
     void forBlocks(Eigen::Index n, F f)
     {
         const Eigen::Index nb = nBlocks(n);
-        const bool parallel =
-            n >= Eigen::Index(6*solverParallelMinParticles) && nb > 1;
+        const bool parallel = threaded(std::size_t(n/6)) && nb > 1;
         #pragma omp parallel for schedule(static) if(parallel)
         for (Eigen::Index k = 0; k < nb; ++k)
         {

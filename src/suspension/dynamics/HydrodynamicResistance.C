@@ -1,7 +1,6 @@
 #include "dynamics/HydrodynamicResistance.H"
 
 #include <Eigen/Cholesky>
-#include <omp.h>
 
 namespace suspension
 {
@@ -19,10 +18,7 @@ namespace
     {
         const Mat3 N = outer(n, n);
         const Mat3 T = Mat3::Identity() - N;
-        Mat3 nx;
-        nx <<       0, -n.z(),  n.y(),
-                n.z(),      0, -n.x(),
-               -n.y(),  n.x(),      0;
+        const Mat3 nx = crossMatrix(n);
         Block D;
         D.topLeftCorner<3, 3>() = XA*N + YA*T;
         D.topRightCorner<3, 3>() = YB*nx;
@@ -85,12 +81,17 @@ namespace
 HydrodynamicResistance::HydrodynamicResistance
 (
     const StokesDrag& drag,
-    const std::optional<Lubrication>& lubrication
+    const Lubrication* lubrication
 )
 :
     drag_(drag),
-    lubrication_(lubrication)
-{}
+    lubrication_()
+{
+    if (lubrication)
+    {
+        lubrication_ = *lubrication;
+    }
+}
 
 
 HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
@@ -102,51 +103,56 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
 )
 {
     const std::size_t N = p.size();
-    const int nThreads = omp_get_max_threads();
+    const std::size_t nB = reductionBlocks(N);
     const double eta = drag_.params().eta;
+    const double gap = lubrication_ ? lubrication_->gap() : -1;
 
-    auto geometry = [&](std::size_t i, std::size_t j)
+    // Minimum-image r of a slot, and whether it is in lubrication range
+    auto separation = [&](std::size_t i, std::size_t j)
     {
         Vec3 r = p.x[j] - p.x[i];
         box.minimumImage(r);
-        return PairGeometry::make(r, p.a[i], p.a[j]);
+        return r;
     };
-    auto lubricated = [&](const PairGeometry& g)
+    auto lubricated = [&](std::size_t i, std::size_t j, const Vec3& r)
     {
-        return lubrication_ && g.dist < lubrication_->range(g.ai, g.aj);
+        const double R = p.a[i] + p.a[j] + gap;
+        return gap >= 0 && r.squaredNorm() < R*R;
     };
 
-    // Pairs in lubrication range, counted per first particle
-    offset_.assign(N + 1, 0);
-    #pragma omp parallel for schedule(static) if(N >= parallelMinParticles)
+    // The index of the pairs in lubrication range
+    index_.offset.assign(N + 1, 0);
+    #pragma omp parallel for schedule(static) if(threaded(N))
     for (std::size_t i = 0; i < N; ++i)
     {
         std::uint32_t count = 0;
         for (std::uint32_t k = pairs.offset[i]; k < pairs.offset[i + 1]; ++k)
         {
-            count += lubricated(geometry(i, pairs.j[k]));
+            const std::uint32_t j = pairs.j[k];
+            count += lubricated(i, j, separation(i, j));
         }
-        offset_[i + 1] = count;
+        index_.offset[i + 1] = count;
     }
     for (std::size_t i = 0; i < N; ++i)
     {
-        offset_[i + 1] += offset_[i];
+        index_.offset[i + 1] += index_.offset[i];
     }
-    pairs_.resize(offset_[N]);
-    pairRows_.resize(offset_[N]);
+    const std::size_t nPairs = index_.offset[N];
+    index_.j.resize(nPairs);
+    pairs_.resize(nPairs);
+    pairRows_.resize(nPairs);
     diagonalR_.resize(N);
     ambientForces_.resize(6*N);
 
     // Pass 1: Stokes drag, pair coefficients and the rows of i of each
-    // pair; the rows of j wait in pairRows_
-    std::vector<Mat3> stokesS(nThreads, Mat3::Zero());
-    std::vector<Mat3> lubricationS(nThreads, Mat3::Zero());
-    #pragma omp parallel if(N >= parallelMinParticles)
+    // pair; the rows of j wait in pairRows_. Stresslets per block.
+    std::vector<Mat3> stokesS(nB, Mat3::Zero());
+    std::vector<Mat3> lubricationS(nB, Mat3::Zero());
+    #pragma omp parallel for schedule(static) if(threaded(N))
+    for (std::size_t blk = 0; blk < nB; ++blk)
     {
-        const int t = omp_get_thread_num();
-
-        #pragma omp for schedule(static)
-        for (std::size_t i = 0; i < N; ++i)
+        const std::size_t end = std::min(N, (blk + 1)*reductionBlock);
+        for (std::size_t i = blk*reductionBlock; i < end; ++i)
         {
             const double a = p.a[i];
             const FlowSample& fi = ambient[i];
@@ -155,24 +161,26 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
             const StokesDrag::Result d = drag_.eval(a, fi.U, fi.Omega(), fi);
             Vec6 b;
             b << d.F, d.T;
-            stokesS[t] += d.S;
+            stokesS[blk] += d.S;
 
             Block D = Block::Zero();
             D.diagonal() << Vec3::Constant(6*pi*eta*a), Vec3::Constant(8*pi*eta*a*a*a);
 
             const Vec6 vi = relativeVelocity(p, fi, i);
-            std::uint32_t s = offset_[i];
+            std::uint32_t s = index_.offset[i];
             for (std::uint32_t k = pairs.offset[i]; k < pairs.offset[i + 1]; ++k)
             {
-                const std::size_t j = pairs.j[k];
-                const PairGeometry g = geometry(i, j);
-                if (!lubricated(g))
+                const std::uint32_t j = pairs.j[k];
+                const Vec3 r = separation(i, j);
+                if (!lubricated(i, j, r))
                 {
                     continue;
                 }
+                const PairGeometry g = PairGeometry::make(r, p.a[i], p.a[j]);
                 const LubricationCoefficients c = lubrication_->coefficients(g);
+                index_.j[s] = j;
                 Pair& q = pairs_[s];
-                q = Pair{static_cast<std::uint32_t>(j), g.n, c.XA, c.YA, c.YB, c.YC};
+                q = Pair{g.n, c.XA, c.YA, c.YB, c.YC};
 
                 // (A.3): F^E, T^E of i now, of j in pass 2
                 const Lubrication::PairVector fE = Lubrication::strainForces
@@ -188,40 +196,22 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
                 // Stresslet (9b) of the force on i at the current velocities
                 Vec6 yi, yj;
                 pairProduct(q, vi, relativeVelocity(p, ambient[j], j), yi, yj);
-                lubricationS[t] += symm(outer(g.r, fE.segment<3>(0) - yi.head<3>()));
+                lubricationS[blk] += symm(outer(g.r, fE.segment<3>(0) - yi.head<3>()));
                 ++s;
             }
             ambientForces_.segment<6>(6*i) = b;
             diagonalR_[i] = D;
         }
     }
-
-    // Transposed index: the pairs of each second particle, in pair order
-    offsetT_.assign(N + 1, 0);
-    for (const Pair& q : pairs_)
-    {
-        ++offsetT_[q.j + 1];
-    }
-    for (std::size_t j = 0; j < N; ++j)
-    {
-        offsetT_[j + 1] += offsetT_[j];
-    }
-    slotT_.resize(pairs_.size());
-    {
-        std::vector<std::uint32_t> next(offsetT_.begin(), offsetT_.end() - 1);
-        for (std::uint32_t s = 0; s < pairs_.size(); ++s)
-        {
-            slotT_[next[pairs_[s].j]++] = s;
-        }
-    }
+    index_.transpose();
 
     // Pass 2: the rows of j, F^E, T^E and diagonal blocks, in pair order
-    #pragma omp parallel for schedule(static) if(N >= parallelMinParticles)
+    #pragma omp parallel for schedule(static) if(threaded(N))
     for (std::size_t j = 0; j < N; ++j)
     {
-        for (std::uint32_t k = offsetT_[j]; k < offsetT_[j + 1]; ++k)
+        for (std::uint32_t k = index_.offsetT[j]; k < index_.offsetT[j + 1]; ++k)
         {
-            const std::uint32_t s = slotT_[k];
+            const std::uint32_t s = index_.slotT[k];
             const Pair& q = pairs_[s];
             ambientForces_.segment<6>(6*j) += pairRows_[s];
             diagonalR_[j] += selfBlock(q.n, q.XA.jj, q.YA.jj, q.YB.jj, q.YC.jj);
@@ -229,10 +219,10 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
     }
 
     Stresslets S{Mat3::Zero(), Mat3::Zero()};
-    for (int t = 0; t < nThreads; ++t)
+    for (std::size_t blk = 0; blk < nB; ++blk)
     {
-        S.stokes += stokesS[t];
-        S.lubrication += lubricationS[t];
+        S.stokes += stokesS[blk];
+        S.lubrication += lubricationS[blk];
     }
     return S;
 }
@@ -246,7 +236,7 @@ void HydrodynamicResistance::setInertia(const Particles& p, double invDt)
     rotation_.resize(N);
     inverseA_.resize(N);
 
-    #pragma omp parallel for schedule(static) if(N >= parallelMinParticles)
+    #pragma omp parallel for schedule(static) if(threaded(N))
     for (std::size_t i = 0; i < N; ++i)
     {
         const double a = p.a[i];
@@ -266,7 +256,7 @@ void HydrodynamicResistance::apply(const Vector& x, Vector& y) const
     const std::size_t N = translation_.size();
     y.resize(6*N);
 
-    #pragma omp parallel if(N >= solverParallelMinParticles)
+    #pragma omp parallel if(threaded(N))
     {
         // Pass 1: diagonal, rows of i; rows of j into pairRows_
         #pragma omp for schedule(static)
@@ -275,11 +265,13 @@ void HydrodynamicResistance::apply(const Vector& x, Vector& y) const
             const Vec6 xi = x.segment<6>(6*i);
             Vec6 yi;
             yi << translation_[i]*xi.head<3>(), rotation_[i]*xi.tail<3>();
-            for (std::uint32_t s = offset_[i]; s < offset_[i + 1]; ++s)
+            for (std::uint32_t s = index_.offset[i]; s < index_.offset[i + 1]; ++s)
             {
-                const Pair& q = pairs_[s];
                 Vec6 rowsI;
-                pairProduct(q, xi, x.segment<6>(6*q.j), rowsI, pairRows_[s]);
+                pairProduct
+                (
+                    pairs_[s], xi, x.segment<6>(6*index_.j[s]), rowsI, pairRows_[s]
+                );
                 yi += rowsI;
             }
             y.segment<6>(6*i) = yi;
@@ -290,9 +282,9 @@ void HydrodynamicResistance::apply(const Vector& x, Vector& y) const
         for (std::size_t j = 0; j < N; ++j)
         {
             Vec6 yj = Vec6::Zero();
-            for (std::uint32_t k = offsetT_[j]; k < offsetT_[j + 1]; ++k)
+            for (std::uint32_t k = index_.offsetT[j]; k < index_.offsetT[j + 1]; ++k)
             {
-                yj += pairRows_[slotT_[k]];
+                yj += pairRows_[index_.slotT[k]];
             }
             y.segment<6>(6*j) += yj;
         }
@@ -305,7 +297,7 @@ void HydrodynamicResistance::precondition(const Vector& r, Vector& z) const
     const std::size_t N = inverseA_.size();
     z.resize(6*N);
 
-    #pragma omp parallel for schedule(static) if(N >= solverParallelMinParticles)
+    #pragma omp parallel for schedule(static) if(threaded(N))
     for (std::size_t i = 0; i < N; ++i)
     {
         z.segment<6>(6*i) = inverseA_[i]*r.segment<6>(6*i);

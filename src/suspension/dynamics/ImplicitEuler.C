@@ -11,7 +11,7 @@ ImplicitEuler::ImplicitEuler
 )
 :
     inertia_(inertia),
-    resistance_(models.drag, models.lubrication),
+    resistance_(models.drag, models.get<Lubrication>()),
     solver_(solver)
 {}
 
@@ -27,8 +27,8 @@ void ImplicitEuler::evaluate
 {
     const HydrodynamicResistance::Stresslets S =
         resistance_.assemble(p, box, ambient, pairs);
-    summary.stresslet[stokes] = S.stokes;
-    summary.stresslet[lubrication] = S.lubrication;
+    summary.stresslet[contributionIndex("stokes")] = S.stokes;
+    summary.stresslet[contributionIndex(Lubrication::contribution)] = S.lubrication;
 }
 
 
@@ -40,7 +40,7 @@ void ImplicitEuler::solve
 )
 {
     const std::size_t N = p.size();
-    const bool parallel = N >= parallelMinParticles;
+    const bool parallel = threaded(N);
     const double invDt = inertia_ ? 1/dt : 0;
     resistance_.setInertia(p, invDt);
 
@@ -73,7 +73,7 @@ void ImplicitEuler::solve
 void ImplicitEuler::move(Particles& p, const LeesEdwardsBox& box, double dt)
 {
     const std::size_t N = p.size();
-    const bool parallel = N >= parallelMinParticles;
+    const bool parallel = threaded(N);
 
     #pragma omp parallel for schedule(static) if(parallel)
     for (std::size_t i = 0; i < N; ++i)

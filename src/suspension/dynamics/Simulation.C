@@ -45,12 +45,13 @@ Simulation::Simulation
     particles_(std::move(particles)),
     box_(box),
     flow_(flow),
-    forces_(std::move(models)),
+    forces_(std::move(models), particles_.a),
     search_
     ({
-        forces_.models().interactionGap(particles_.maxRadius(), particles_.maxRadius()),
+        forces_.nearGap(),
         params.skin,
-        params.stencil
+        params.stencil,
+        forces_.farGap()
     }),
     limits_(makeLimits(forces_.models(), particles_, flow, params)),
     dtMax_(params.deltaT > 0 ? params.deltaT : limits_.deltaT()),
@@ -96,9 +97,9 @@ void Simulation::evaluateForces(double dt)
 {
     if (implicit_)
     {
-        summary_ = forces_.compute
+        summary_ = forces_.advance
         (
-            particles_, box_, flow_, pairs_, dt, nullptr,
+            particles_, box_, flow_, pairs_, search_.far(), dt,
             ForceField::Forces::nonHydrodynamic
         );
         ScopedTime timer(times_.hydrodynamics);
@@ -109,7 +110,7 @@ void Simulation::evaluateForces(double dt)
     }
     else
     {
-        summary_ = forces_.compute(particles_, box_, flow_, pairs_, dt);
+        summary_ = forces_.advance(particles_, box_, flow_, pairs_, search_.far(), dt);
     }
 }
 
@@ -123,16 +124,23 @@ void Simulation::start(double t, bool forcesGiven)
     {
         evaluateForces(0);
     }
+    else if (implicit_)
+    {
+        // Summary (stress, contacts) of the given state; F and T as given
+        summary_ = forces_.evaluate
+        (
+            particles_, box_, flow_, pairs_, search_.far(), ForceField::Output(),
+            ForceField::Forces::nonHydrodynamic
+        );
+        ScopedTime timer(times_.hydrodynamics);
+        implicit_->evaluate(particles_, box_, forces_.ambient(), pairs_, summary_);
+    }
     else
     {
-        // Summary (stress, contacts) of the given state, history unchanged
-        std::vector<Vec3> F = particles_.F;
-        std::vector<Vec3> T = particles_.T;
-        PairList frozen = pairs_;
-        evaluateForces(0);
-        pairs_ = std::move(frozen);
-        particles_.F = std::move(F);
-        particles_.T = std::move(T);
+        summary_ = forces_.evaluate
+        (
+            particles_, box_, flow_, pairs_, search_.far(), ForceField::Output()
+        );
     }
     check();
 }
@@ -239,15 +247,9 @@ double Simulation::stepBound() const
 
 void Simulation::particleStresslets(std::vector<Mat3>& S)
 {
-    std::vector<Vec3> F = particles_.F;
-    std::vector<Vec3> T = particles_.T;
-    PairList frozen = pairs_;
-    const ForceSummary summary = summary_;
-    forces_.compute(particles_, box_, flow_, pairs_, 0, &S);
-    pairs_ = std::move(frozen);
-    particles_.F = std::move(F);
-    particles_.T = std::move(T);
-    summary_ = summary;
+    ForceField::Output out;
+    out.S = &S;
+    forces_.evaluate(particles_, box_, flow_, pairs_, search_.far(), out);
 }
 
 

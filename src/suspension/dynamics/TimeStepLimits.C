@@ -34,13 +34,17 @@ namespace
     {
         const double eta = models.drag.params().eta;
         Lubrication::PairMatrix R = Lubrication::PairMatrix::Zero();
-        if (models.lubrication && ai + aj + h < models.lubrication->range(ai, aj))
+        const PairGeometry g = PairGeometry::make(Vec3(ai + aj + h, 0, 0), ai, aj);
+        models.forEach([&](const auto& m)
         {
-            R = models.lubrication->resistanceMatrix
-            (
-                PairGeometry::make(Vec3(ai + aj + h, 0, 0), ai, aj)
-            );
-        }
+            if constexpr (std::decay_t<decltype(m)>::hydrodynamic)
+            {
+                if (h < m.gap())
+                {
+                    R += m.resistanceMatrix(g);
+                }
+            }
+        });
         const double radius[2] = {ai, aj};
         for (int s = 0; s < 2; ++s)
         {
@@ -166,6 +170,124 @@ namespace
             quadraticInverse(pairResistance(models, ai, aj, h), b)
         };
     }
+
+    //- The limits' view of the case (forces/PairModel.H)
+    class Builder
+    :
+        public TimeStepLimitBuilder
+    {
+        const ForceModels& models_;
+        const std::array<std::pair<double, double>, 3> pairs_;
+        const double rho_;
+        const bool explicit_;
+        const bool inertia_;
+        const double maxGradU_;
+        std::vector<TimeStepLimit>& limits_;
+
+    public:
+
+        Builder
+        (
+            const ForceModels& models,
+            const std::array<std::pair<double, double>, 3>& pairs,
+            double rho,
+            bool explicitHydrodynamics,
+            bool inertia,
+            double maxGradU,
+            std::vector<TimeStepLimit>& limits
+        )
+        :
+            models_(models),
+            pairs_(pairs),
+            rho_(rho),
+            explicit_(explicitHydrodynamics),
+            inertia_(inertia),
+            maxGradU_(maxGradU),
+            limits_(limits)
+        {}
+
+        bool explicitHydrodynamics() const override { return explicit_; }
+        double rho() const override { return rho_; }
+        double maxVelocityGradient() const override { return maxGradU_; }
+
+        //- No inertia when overdamped, no implicit resistance when the
+        //  hydrodynamics is explicit
+        double springLimit
+        (
+            double k,
+            double gamma,
+            Mode mode,
+            double ai,
+            double aj,
+            double h
+        ) const override
+        {
+            const ModeInverses inv = modeInverses
+            (
+                models_, ai, aj, h, rho_,
+                contactModeDirections(ai, aj)[static_cast<int>(mode)]
+            );
+            return modeLimit
+            (
+                k, gamma,
+                inertia_ ? 1/inv.inertia : 0,
+                explicit_ ? 0 : 1/inv.resistance
+            );
+        }
+
+        //- At each gap the spring |dF/dh| on the normal mode against the
+        //  resistance at that gap (with lubrication on, X^A grows towards
+        //  contact as the force does)
+        double centralForceLimit
+        (
+            const std::function<double(double)>& force,
+            double ai,
+            double aj,
+            double hMax
+        ) const override
+        {
+            const int samples = 2000;
+            const double dh = hMax/(samples + 1);   // stay inside the cut-off
+            double dt = std::numeric_limits<double>::infinity();
+            double Fh = force(0);
+            for (int s = 0; s < samples; ++s)
+            {
+                const double h = s*dh;
+                const double Fnext = force(h + dh);
+                const double k = std::abs(Fnext - Fh)/dh;
+                Fh = Fnext;
+                if (k > 0)
+                {
+                    dt = std::min(dt, springLimit(k, 0, Mode::normal, ai, aj, h));
+                }
+            }
+            return dt;
+        }
+
+        double pairRelaxationTime(double ai, double aj) const override
+        {
+            return suspension::pairRelaxationTime(models_, ai, aj, rho_);
+        }
+
+        void addOverPairs
+        (
+            const std::string& name,
+            const std::function<double(double, double)>& limitOfPair
+        ) override
+        {
+            double dt = std::numeric_limits<double>::infinity();
+            for (const auto& ab : pairs_)
+            {
+                dt = std::min(dt, limitOfPair(ab.first, ab.second));
+            }
+            limits_.push_back({name, dt});
+        }
+
+        void add(const std::string& name, double value) override
+        {
+            limits_.push_back({name, value});
+        }
+    };
 }
 // End anonymous namespace
 
@@ -210,133 +332,15 @@ TimeStepLimits::TimeStepLimits
         });
     }
 
-    const std::pair<double, double> pairs[3] =
-        {{aMin, aMin}, {aMin, aMax}, {aMax, aMax}};
-
-    // Largest stable step of a spring k (dashpot gamma) on a mode with the
-    // given inverse inertia and resistance: no inertia when overdamped, no
-    // implicit resistance when the hydrodynamics is explicit
-    auto limit = [&](double k, double gamma, const ModeInverses& inv)
+    Builder builder
+    (
+        models, {{{aMin, aMin}, {aMin, aMax}, {aMax, aMax}}}, rho,
+        explicitHydrodynamics, inertia, maxVelocityGradient, limits_
+    );
+    models.forEach([&](const auto& m)
     {
-        return modeLimit
-        (
-            k, gamma,
-            inertia ? 1/inv.inertia : 0,
-            explicitHydrodynamics ? 0 : 1/inv.resistance
-        );
-    };
-
-    auto addLimit = [&](const char* name, auto limitOfPair)
-    {
-        double dt = limitOfPair(pairs[0].first, pairs[0].second);
-        for (const auto& ab : pairs)
-        {
-            dt = std::min(dt, limitOfPair(ab.first, ab.second));
-        }
-        limits_.push_back({name, dt});
-    };
-
-    // A central force sampled over gaps [0, hMax]: at each gap the spring
-    // |dF/dh| on the normal mode against the resistance at that gap (with
-    // lubrication on, X^A grows towards contact as the force does)
-    auto centralForceLimit = [&](const auto& model, double ai, double aj, double hMax)
-    {
-        const Eigen::Matrix<double, 12, 1> n = contactModeDirections(ai, aj)[0];
-        const int samples = 2000;
-        const double dh = hMax/(samples + 1);       // stay inside the cut-off
-        auto force = [&](double h)
-        {
-            return model.eval(PairGeometry::make(Vec3(ai + aj + h, 0, 0), ai, aj)).F.x();
-        };
-        double dt = std::numeric_limits<double>::infinity();
-        double Fh = force(0);
-        for (int s = 0; s < samples; ++s)
-        {
-            const double h = s*dh;
-            const double Fnext = force(h + dh);
-            const double k = std::abs(Fnext - Fh)/dh;
-            Fh = Fnext;
-            if (k > 0)
-            {
-                dt = std::min(dt, limit(k, 0, modeInverses(models, ai, aj, h, rho, n)));
-            }
-        }
-        return dt;
-    };
-
-    if (models.lubrication && explicitHydrodynamics)
-    {
-        addLimit("lubrication", [&](double ai, double aj)
-        {
-            return 2*pairRelaxationTime(models, ai, aj, rho);
-        });
-    }
-    if (models.lubrication && !explicitHydrodynamics && maxVelocityGradient > 0)
-    {
-        limits_.push_back
-        ({
-            "lubricationGap",
-            25*models.lubrication->params().epsilon/maxVelocityGradient
-        });
-    }
-    if (models.contact)
-    {
-        const FrictionalContact::Params& c = models.contact->params();
-        addLimit("contact", [&](double ai, double aj)
-        {
-            if (explicitHydrodynamics)
-            {
-                const double tc = FrictionalContact::contactTimeScale
-                (
-                    c, sphereMass(ai, rho), ai, sphereMass(aj, rho), aj
-                );
-                return 2*tc/pi;
-            }
-            // A pair in contact feels Stokes drag and, when on, lubrication
-            // at the regularised gap (A.6)
-            const auto b = contactModeDirections(ai, aj);
-            double dt = limit
-            (
-                c.kn, c.gammaN, modeInverses(models, ai, aj, 0, rho, b[0])
-            );
-            // Without friction (mu_C = 0) the tangential spring never
-            // pulls, and without rolling stiffness or friction neither
-            // does the rolling one
-            if (c.muC > 0)
-            {
-                dt = std::min
-                (
-                    dt, limit(c.kt, 0, modeInverses(models, ai, aj, 0, rho, b[1]))
-                );
-            }
-            if (c.kr > 0 && models.contact->muR() > 0)
-            {
-                dt = std::min
-                (
-                    dt, limit(c.kr, 0, modeInverses(models, ai, aj, 0, rho, b[2]))
-                );
-            }
-            return dt;
-        });
-    }
-    if (models.repulsion)
-    {
-        addLimit("repulsion", [&](double ai, double aj)
-        {
-            const double hMax = models.repulsion->range(ai, aj) - ai - aj;
-            return centralForceLimit(*models.repulsion, ai, aj, hMax);
-        });
-    }
-    if (models.attraction)
-    {
-        addLimit("attraction", [&](double ai, double aj)
-        {
-            return centralForceLimit
-            (
-                *models.attraction, ai, aj, 0.1*std::min(ai, aj)
-            );
-        });
-    }
+        m.addTimeStepLimits(builder);
+    });
 
     for (const TimeStepLimit& l : limits_)
     {

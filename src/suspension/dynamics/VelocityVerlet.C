@@ -1,4 +1,5 @@
 #include "dynamics/VelocityVerlet.H"
+#include "core/Parallel.H"
 
 namespace suspension
 {
@@ -7,7 +8,7 @@ void VelocityVerlet::predict(Particles& p, const LeesEdwardsBox& box, double dt)
 {
     const std::size_t N = p.size();
 
-    #pragma omp parallel for schedule(static)
+    #pragma omp parallel for schedule(static) if(threaded(N))
     for (std::size_t i = 0; i < N; ++i)
     {
         const Vec3 alpha = p.F[i]/p.m[i];
@@ -23,7 +24,7 @@ void VelocityVerlet::correct(Particles& p, double dt)
 {
     const std::size_t N = p.size();
 
-    #pragma omp parallel for schedule(static)
+    #pragma omp parallel for schedule(static) if(threaded(N))
     for (std::size_t i = 0; i < N; ++i)
     {
         p.u[i] += 0.5*dt*p.F[i]/p.m[i];             // (15d)

@@ -47,4 +47,23 @@ VanDerWaalsAttraction::Params ElectroChemicalScales::attraction() const
     return a;
 }
 
+
+ElectroChemicalScales ElectroChemicalScales::read
+(
+    const ModelInput& electroChemical
+)
+{
+    Params p;
+    p.shearRateRatio = electroChemical.scalar
+    (
+        "shearRateRatio", ModelInput::Range::positive(),
+        "gammaDot/gammaDot0 (eq. 14)"
+    );
+    p.forceRatio = electroChemical.scalar
+    (
+        "forceRatio", ModelInput::Range::positive(), "F^R/F^A at contact"
+    );
+    return ElectroChemicalScales(p);
+}
+
 } // namespace suspension

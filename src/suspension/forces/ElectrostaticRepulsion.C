@@ -1,8 +1,10 @@
 #include "forces/ElectrostaticRepulsion.H"
+#include "forces/ElectroChemicalScales.H"
 #include "forces/PairRadii.H"
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 namespace suspension
 {
@@ -21,10 +23,6 @@ ElectrostaticRepulsion::ElectrostaticRepulsion(const Params& p)
 PairForce ElectrostaticRepulsion::eval(const PairGeometry& g) const
 {
     PairForce f;
-    if (g.dist >= range(g.ai, g.aj))
-    {
-        return f;
-    }
 
     // Overlap (h < 0) feels the contact value                      eq. (6a)
     const double abar = harmonicRadius(g.ai, g.aj);
@@ -35,9 +33,48 @@ PairForce ElectrostaticRepulsion::eval(const PairGeometry& g) const
 }
 
 
-double ElectrostaticRepulsion::maxStiffness(double ai, double aj) const
+ElectrostaticRepulsion::Params ElectrostaticRepulsion::read
+(
+    const ModelInput& input
+)
 {
-    return p_.FER*harmonicRadius(ai, aj)/p_.lambdaD;
+    Params p = ElectroChemicalScales::read(input.parent()).repulsion
+    (
+        input.scalar("debyeLength", ModelInput::Range::positive(), "lambda_D/a0")
+    );
+    p.cutoffFactor = input.scalar
+    (
+        "cutoff", ModelInput::Range::positive(), "cut-off gap/lambda_D"
+    );
+    return p;
+}
+
+
+std::string ElectrostaticRepulsion::describe() const
+{
+    std::ostringstream os;
+    os  << "F_ER = " << p_.FER << ", lambdaD = " << p_.lambdaD
+        << ", cut-off gap " << gap() << " (" << p_.cutoffFactor << " lambdaD)";
+    return os.str();
+}
+
+
+void ElectrostaticRepulsion::addTimeStepLimits
+(
+    TimeStepLimitBuilder& limits
+) const
+{
+    limits.addOverPairs("repulsion", [&](double ai, double aj)
+    {
+        return limits.centralForceLimit
+        (
+            [&](double h)
+            {
+                return eval(PairGeometry::make(Vec3(ai + aj + h, 0, 0), ai, aj)).F.x();
+            },
+            ai, aj, gap()
+        );
+    });
 }
 
 } // namespace suspension

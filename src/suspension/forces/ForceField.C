@@ -2,283 +2,560 @@
 
 #include "core/Parallel.H"
 
-#include <omp.h>
-
 #include <algorithm>
+#include <stdexcept>
 
 namespace suspension
 {
 
-ForceField::ForceField(ForceModels models)
+namespace
+{
+    constexpr bool sameString(const char* a, const char* b)
+    {
+        return *a == *b && (*a == '\0' || sameString(a + 1, b + 1));
+    }
+
+    //- Whether M is an alternative of one of Ms (same contribution)
+    template<class M, class... Ms>
+    constexpr bool conflicts()
+    {
+        return (sameString(M::contribution, Ms::contribution) || ... || false);
+    }
+
+    template<std::size_t I, class List>
+    struct TypeAt;
+
+    template<std::size_t I, class M, class... Ms>
+    struct TypeAt<I, ModelList<M, Ms...>>
+    :
+        TypeAt<I - 1, ModelList<Ms...>>
+    {};
+
+    template<class M, class... Ms>
+    struct TypeAt<0, ModelList<M, Ms...>>
+    {
+        using type = M;
+    };
+
+    template<class... Ms>
+    constexpr bool anyVelocities = (Ms::usesVelocities || ... || false);
+
+    template<class... Ms>
+    constexpr bool anyHistory = (Ms::hasHistory || ... || false);
+
+    //- The kernel of M, called as its traits say (forces/PairModel.H)
+    template<class M>
+    PairForce evalModel
+    (
+        const M& model,
+        const PairGeometry& g,
+        const PairKinematics* kin,
+        const ContactState& old,
+        ContactState& next,
+        double dt
+    )
+    {
+        if constexpr (M::hasHistory)
+        {
+            return model.eval(g, *kin, old, next, dt);
+        }
+        else if constexpr (M::usesVelocities)
+        {
+            return model.eval(g, *kin);
+        }
+        else
+        {
+            return model.eval(g);
+        }
+    }
+
+    //- Rows [begin, end) of reduction block b
+    struct BlockRange
+    {
+        std::size_t begin;
+        std::size_t end;
+
+        BlockRange(std::size_t b, std::size_t N)
+        :
+            begin(b*reductionBlock),
+            end(std::min(N, (b + 1)*reductionBlock))
+        {}
+    };
+}
+
+
+// * * * * * * * * * * * * * * * * Constructor * * * * * * * * * * * * * * * //
+
+ForceField::ForceField(ForceModels models, const std::vector<double>& radii)
 :
-    models_(std::move(models))
-{}
+    models_(std::move(models)),
+    farMask_(0),
+    nearGap_(0),
+    farGap_(0)
+{
+    models_.prepare(radii);
+
+    double nonCentralGap = 0;
+    models_.forEach([&](const auto& m)
+    {
+        if (!std::decay_t<decltype(m)>::central)
+        {
+            nonCentralGap = std::max(nonCentralGap, m.gap());
+        }
+    });
+
+    unsigned bit = 1;
+    forEachPairModelType([&](auto tag)
+    {
+        using M = typename decltype(tag)::type;
+        if (const M* m = models_.template get<M>())
+        {
+            if (M::central && m->gap() > farPassMinGap && m->gap() > nonCentralGap)
+            {
+                farMask_ |= bit;
+                farGap_ = std::max(farGap_, m->gap());
+            }
+            else
+            {
+                nearGap_ = std::max(nearGap_, m->gap());
+            }
+        }
+        bit <<= 1;
+    });
+}
 
 
-template<bool Lub, bool Con, bool Rep, bool Att>
-void ForceField::pairLoop
+// * * * * * * * * * * * * * * * * * Dispatch  * * * * * * * * * * * * * * * //
+
+template<class Pass, std::size_t I, class... Chosen>
+void ForceField::dispatch(unsigned mask, const Pass& pass)
+{
+    if constexpr (I == PairModels::size)
+    {
+        pass(ModelList<Chosen...>());
+    }
+    else
+    {
+        using M = typename TypeAt<I, PairModels>::type;
+        if (mask & (1u << I))
+        {
+            if constexpr (conflicts<M, Chosen...>())
+            {
+                throw std::logic_error
+                (
+                    std::string("ForceField: ") + M::typeName
+                  + " is on with an alternative of it"
+                );
+            }
+            else
+            {
+                dispatch<Pass, I + 1, Chosen..., M>(mask, pass);
+            }
+        }
+        else
+        {
+            dispatch<Pass, I + 1, Chosen...>(mask, pass);
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Near pass * * * * * * * * * * * * * * * * //
+
+template<class... Ms>
+void ForceField::nearPass
 (
+    ModelList<Ms...>,
     const Particles& p,
     const LeesEdwardsBox& box,
-    PairList& pairs,
+    const PairList& near,
+    ContactState* history,
     double dt,
-    bool perParticleStress,
-    std::vector<ForceSummary>& threadSummary
+    const Output& out
 )
 {
-    const std::size_t N = p.size();
-    const double imageVelocity = box.imageVelocity();
-
-    #pragma omp parallel num_threads(static_cast<int>(threadF_.size()))
+    static_assert
+    (
+        (0 + ... + int(Ms::hasHistory)) <= 1,
+        "a pair carries one ContactState: at most one model with history"
+    );
+    if constexpr (sizeof...(Ms) > 0)
     {
-        const int t = omp_get_thread_num();
-        std::vector<Vec3>& F = threadF_[t];
-        std::vector<Vec3>& T = threadT_[t];
-        std::vector<Mat3>& S = threadS_[t];
-        ForceSummary& sum = threadSummary[t];
+        const std::size_t N = p.size();
+        const std::size_t nC = contributionNames().size();
+        const std::tuple<const Ms*...> ms(models_.get<Ms>()...);
+        const int contribution[] = {contributionIndex(Ms::contribution)...};
+        const double maxGap = std::max({std::get<const Ms*>(ms)->gap()...});
+        const double imageVelocity = box.imageVelocity();
+        const bool perParticle = out.S != nullptr;
+        const ContactState* historyIn = near.history.data();
 
-        #pragma omp for schedule(static)
-        for (std::size_t i = 0; i < N; ++i)
+        slotForce_.resize(near.nPairs());
+        slotOn_.resize(near.nPairs());
+        slotS_.resize(perParticle ? near.nPairs() : 0);
+
+        // Pass 1: the rows of i; the parts of j wait in the slots
+        #pragma omp parallel for schedule(static) if(threaded(N))
+        for (std::size_t b = 0; b < reductionBlocks(N); ++b)
         {
-            const FlowSample& fi = ambient_[i];
-            const Vec3 wi = p.omega[i] - fi.Omega();
-            const Vec3 ui = p.u[i] - fi.U;
-            const Mat3 Ei = fi.E();
-
-            for (std::uint32_t k = pairs.offset[i]; k < pairs.offset[i + 1]; ++k)
+            Mat3 S[sizeof...(Ms)];
+            for (Mat3& s : S)
             {
-                const std::size_t j = pairs.j[k];
-
-                // Minimum image of x_j and the image's velocity jump (eq. 16)
-                Vec3 r = p.x[j] - p.x[i];
-                const int m = box.minimumImage(r);
-                const PairGeometry g = PairGeometry::make(r, p.a[i], p.a[j]);
-
-                const FlowSample& fj = ambient_[j];
-                // The image moves faster by m gammaDot Ly, and so does U_inf
-                // there: the velocity relative to the ambient flow is unchanged
-                const Vec3 uj = p.u[j] + m*imageVelocity*Vec3::UnitX();
-                const PairKinematics kin
+                s.setZero();
+            }
+            BlockStats& stats = blockStats_[b];
+            const BlockRange rows(b, N);
+            for (std::size_t i = rows.begin; i < rows.end; ++i)
+            {
+                Vec3 Fi = Vec3::Zero();
+                Vec3 Ti = Vec3::Zero();
+                Mat3 Si = Mat3::Zero();
+                for (std::uint32_t k = near.offset[i]; k < near.offset[i + 1]; ++k)
                 {
-                    ui,
-                    p.u[j] - fj.U,
-                    wi,
-                    p.omega[j] - fj.Omega(),
-                    uj - p.u[i],
-                    p.omega[i],
-                    p.omega[j],
-                    Ei,
-                    fj.E()
-                };
+                    const std::uint32_t j = near.j[k];
 
-                PairForce total;
-                auto add = [&](const PairForce& f, int c)
-                {
-                    total.F += f.F;
-                    total.Ti += f.Ti;
-                    total.Tj += f.Tj;
-                    sum.stresslet[c] += f.S;
-                    if (perParticleStress) total.S += f.S;
-                };
-
-                if constexpr (Lub)
-                {
-                    if (g.dist < models_.lubrication->range(g.ai, g.aj))
+                    // Minimum image of x_j, and one test before anything else
+                    Vec3 r = p.x[j] - p.x[i];
+                    const int image = box.minimumImage(r);
+                    const double R = p.a[i] + p.a[j] + maxGap;
+                    if (!(r.squaredNorm() < R*R))
                     {
-                        add(models_.lubrication->eval(g, kin), lubrication);
-                    }
-                }
-                if constexpr (Con)
-                {
-                    ContactState& state = pairs.history[k];
-                    if (FrictionalContact::inContact(g))
-                    {
-                        add(models_.contact->eval(g, kin, state, dt), contact);
-                        ++sum.nContacts;
-                        const double overlap = -g.h/std::min(g.ai, g.aj);
-                        if (overlap > sum.maxOverlap)
+                        if constexpr (anyHistory<Ms...>)
                         {
-                            sum.maxOverlap = overlap;
-                            sum.maxOverlapPair[0] = p.id[i];
-                            sum.maxOverlapPair[1] = p.id[j];
+                            // eq. (5): a pair out of contact has no stretch
+                            if (history && history[k].active())
+                            {
+                                history[k] = ContactState();
+                            }
                         }
+                        slotOn_[k] = 0;
+                        continue;
+                    }
+
+                    const PairGeometry g = PairGeometry::make(r, p.a[i], p.a[j]);
+                    if (g.h < 0)
+                    {
+                        ++stats.nContacts;
+                        const double overlap = -g.h/std::min(g.ai, g.aj);
+                        if (overlap > stats.maxOverlap)
+                        {
+                            stats.maxOverlap = overlap;
+                            stats.pair[0] = p.id[i];
+                            stats.pair[1] = p.id[j];
+                        }
+                    }
+
+                    PairForce total;
+                    ContactState next;
+                    const ContactState& old =
+                        historyIn ? historyIn[k] : next;
+                    auto applyModels = [&](const PairKinematics* kin)
+                    {
+                        std::size_t m = 0;
+                        (
+                            [&]
+                            {
+                                const Ms& model = *std::get<const Ms*>(ms);
+                                if (g.h < model.gap())
+                                {
+                                    const PairForce f =
+                                        evalModel(model, g, kin, old, next, dt);
+                                    total.F += f.F;
+                                    total.Ti += f.Ti;
+                                    total.Tj += f.Tj;
+                                    total.S += f.S;
+                                    S[m] += f.S;
+                                }
+                                ++m;
+                            }(),
+                            ...
+                        );
+                    };
+                    if constexpr (anyVelocities<Ms...>)
+                    {
+                        // The image moves faster by m gammaDot Ly, and so
+                        // does U_inf there: relative velocities unchanged
+                        const Vec3 du =
+                            p.u[j] + image*imageVelocity*Vec3::UnitX() - p.u[i];
+                        const PairKinematics kin
+                        {
+                            uRel_[i], uRel_[j], wRel_[i], wRel_[j], du,
+                            p.omega[i], p.omega[j], E_[i], E_[j]
+                        };
+                        applyModels(&kin);
                     }
                     else
                     {
-                        state = ContactState();     // eq. (5): xi(t0) = 0
+                        applyModels(nullptr);
                     }
-                }
-                if constexpr (Rep)
-                {
-                    if (g.dist < models_.repulsion->range(g.ai, g.aj))
+                    if constexpr (anyHistory<Ms...>)
                     {
-                        add(models_.repulsion->eval(g), repulsion);
+                        if (history && (next.active() || history[k].active()))
+                        {
+                            history[k] = next;
+                        }
                     }
-                }
-                if constexpr (Att)
-                {
-                    if (g.dist < models_.attraction->range(g.ai, g.aj))
-                    {
-                        add(models_.attraction->eval(g), attraction);
-                    }
-                }
 
-                // Newton's third law: j receives -F (eqs. 4c, 6b, 7b)
-                F[i] += total.F;
-                F[j] -= total.F;
-                T[i] += total.Ti;
-                T[j] += total.Tj;
-                if (perParticleStress)
-                {
-                    S[i] += 0.5*total.S;
-                    S[j] += 0.5*total.S;
+                    // Newton's third law: j receives -F (eqs. 4c, 6b, 7b)
+                    Fi += total.F;
+                    Ti += total.Ti;
+                    slotForce_[k] = SlotForce{-total.F, total.Tj};
+                    if (perParticle)
+                    {
+                        Si += 0.5*total.S;
+                        slotS_[k] = 0.5*total.S;
+                    }
+                    slotOn_[k] = 1;
                 }
+                if (out.F) (*out.F)[i] += Fi;
+                if (out.T) (*out.T)[i] += Ti;
+                if (perParticle) (*out.S)[i] += Si;
+            }
+            for (std::size_t m = 0; m < sizeof...(Ms); ++m)
+            {
+                blockS_[b*nC + contribution[m]] += S[m];
+            }
+        }
+
+        // Pass 2: the parts of j, in the transposed order of the slots
+        #pragma omp parallel for schedule(static) if(threaded(N))
+        for (std::size_t j = 0; j < N; ++j)
+        {
+            Vec3 F = Vec3::Zero();
+            Vec3 T = Vec3::Zero();
+            Mat3 S = Mat3::Zero();
+            for (std::uint32_t t = near.offsetT[j]; t < near.offsetT[j + 1]; ++t)
+            {
+                const std::uint32_t k = near.slotT[t];
+                if (slotOn_[k])
+                {
+                    F += slotForce_[k].F;
+                    T += slotForce_[k].T;
+                    if (perParticle)
+                    {
+                        S += slotS_[k];
+                    }
+                }
+            }
+            if (out.F) (*out.F)[j] += F;
+            if (out.T) (*out.T)[j] += T;
+            if (perParticle) (*out.S)[j] += S;
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Far pass  * * * * * * * * * * * * * * * * //
+
+template<class... Ms>
+void ForceField::farPass
+(
+    ModelList<Ms...>,
+    const Particles& p,
+    const LeesEdwardsBox& box,
+    const PairList& far,
+    const Output& out
+)
+{
+    if constexpr (!(Ms::central && ... && true))
+    {
+        throw std::logic_error("ForceField: a non-central model in the far pass");
+    }
+    else if constexpr (sizeof...(Ms) > 0)
+    {
+        const std::size_t N = p.size();
+        const std::size_t nC = contributionNames().size();
+        const std::tuple<const Ms*...> ms(models_.get<Ms>()...);
+        const int contribution[] = {contributionIndex(Ms::contribution)...};
+        const double maxGap = std::max({std::get<const Ms*>(ms)->gap()...});
+
+        // Each particle its own side of each pair of the full list, with
+        // half of the pair's stresslet
+        #pragma omp parallel for schedule(static) if(threaded(N))
+        for (std::size_t b = 0; b < reductionBlocks(N); ++b)
+        {
+            Mat3 S[sizeof...(Ms)];
+            for (Mat3& s : S)
+            {
+                s.setZero();
+            }
+            const BlockRange rows(b, N);
+            for (std::size_t i = rows.begin; i < rows.end; ++i)
+            {
+                Vec3 Fi = Vec3::Zero();
+                Mat3 Si = Mat3::Zero();
+                for (std::uint32_t k = far.offset[i]; k < far.offset[i + 1]; ++k)
+                {
+                    const std::uint32_t j = far.j[k];
+                    Vec3 r = p.x[j] - p.x[i];
+                    box.minimumImage(r);
+                    const double R = p.a[i] + p.a[j] + maxGap;
+                    if (!(r.squaredNorm() < R*R))
+                    {
+                        continue;
+                    }
+                    const PairGeometry g = PairGeometry::make(r, p.a[i], p.a[j]);
+                    std::size_t m = 0;
+                    (
+                        [&]
+                        {
+                            const Ms& model = *std::get<const Ms*>(ms);
+                            if (g.h < model.gap())
+                            {
+                                const PairForce f = model.eval(g);
+                                Fi += f.F;
+                                Si += 0.5*f.S;
+                                S[m] += 0.5*f.S;
+                            }
+                            ++m;
+                        }(),
+                        ...
+                    );
+                }
+                if (out.F) (*out.F)[i] += Fi;
+                if (out.S) (*out.S)[i] += Si;
+            }
+            for (std::size_t m = 0; m < sizeof...(Ms); ++m)
+            {
+                blockS_[b*nC + contribution[m]] += S[m];
             }
         }
     }
 }
 
 
-ForceSummary ForceField::compute
+// * * * * * * * * * * * * * * * * Evaluation * * * * * * * * * * * * * * * //
+
+ForceSummary ForceField::run
+(
+    const Particles& p,
+    const LeesEdwardsBox& box,
+    const AmbientFlow& flow,
+    const PairList& near,
+    ContactState* history,
+    const PairList& far,
+    double dt,
+    Forces forces,
+    const Output& out
+)
+{
+    const std::size_t N = p.size();
+    const std::size_t nB = reductionBlocks(N);
+    const std::size_t nC = contributionNames().size();
+    const bool hydrodynamic = forces == Forces::all;
+
+    ambient_.resize(N);
+    uRel_.resize(N);
+    wRel_.resize(N);
+    E_.resize(N);
+    blockS_.assign(nB*nC, Mat3::Zero());
+    blockStats_.assign(nB, BlockStats{0, 0, {-1, -1}});
+    if (out.F) out.F->resize(N);
+    if (out.T) out.T->resize(N);
+    if (out.S) out.S->resize(N);
+
+    // Once per particle: the flow and the drag, torque and stresslet (A.1, 9a)
+    {
+        ScopedTime timer(times_.flowSampling);
+        const StokesDrag& drag = models_.drag;
+        #pragma omp parallel for schedule(static) if(threaded(N))
+        for (std::size_t b = 0; b < nB; ++b)
+        {
+            Mat3 S = Mat3::Zero();
+            const BlockRange rows(b, N);
+            for (std::size_t i = rows.begin; i < rows.end; ++i)
+            {
+                const FlowSample& f = ambient_[i] = flow.sample(p.x[i]);
+                uRel_[i] = p.u[i] - f.U;
+                wRel_[i] = p.omega[i] - f.Omega();
+                E_[i] = f.E();
+                const StokesDrag::Result d = hydrodynamic
+                  ? drag.eval(p.a[i], p.u[i], p.omega[i], f)
+                  : StokesDrag::Result{Vec3::Zero(), Vec3::Zero(), Mat3::Zero()};
+                if (out.F) (*out.F)[i] = d.F;
+                if (out.T) (*out.T)[i] = d.T;
+                if (out.S) (*out.S)[i] = d.S;
+                S += d.S;
+            }
+            blockS_[b*nC] = S;
+        }
+    }
+
+    // The pair passes, compiled for the models that are on
+    {
+        ScopedTime timer(times_.pairLoop);
+        unsigned mask = models_.activeMask();
+        if (!hydrodynamic)
+        {
+            unsigned bit = 1;
+            forEachPairModelType([&](auto tag)
+            {
+                if (decltype(tag)::type::hydrodynamic) mask &= ~bit;
+                bit <<= 1;
+            });
+        }
+        dispatch(mask & ~farMask_, [&](auto models)
+        {
+            nearPass(models, p, box, near, history, dt, out);
+        });
+        dispatch(mask & farMask_, [&](auto models)
+        {
+            farPass(models, p, box, far, out);
+        });
+    }
+
+    // Sums in block order
+    ScopedTime timer(times_.particleTerms);
+    ForceSummary summary;
+    for (std::size_t b = 0; b < nB; ++b)
+    {
+        for (std::size_t c = 0; c < nC; ++c)
+        {
+            summary.stresslet[c] += blockS_[b*nC + c];
+        }
+        const BlockStats& s = blockStats_[b];
+        summary.nContacts += s.nContacts;
+        if (s.maxOverlap > summary.maxOverlap)
+        {
+            summary.maxOverlap = s.maxOverlap;
+            summary.maxOverlapPair[0] = s.pair[0];
+            summary.maxOverlapPair[1] = s.pair[1];
+        }
+    }
+    return summary;
+}
+
+
+ForceSummary ForceField::advance
 (
     Particles& p,
     const LeesEdwardsBox& box,
     const AmbientFlow& flow,
-    PairList& pairs,
+    PairList& near,
+    const PairList& far,
     double dt,
-    std::vector<Mat3>* particleStresslet,
     Forces forces
 )
 {
-    const std::size_t N = p.size();
-    const int nThreads = threadsFor(N);
-    const bool perParticle = particleStresslet != nullptr;
-    const bool hydrodynamic = forces == Forces::all;
+    Output out;
+    out.F = &p.F;
+    out.T = &p.T;
+    return run(p, box, flow, near, near.history.data(), far, dt, forces, out);
+}
 
-    ambient_.resize(N);
-    threadF_.resize(nThreads);
-    threadT_.resize(nThreads);
-    threadS_.resize(nThreads);
-    std::vector<ForceSummary> threadSummary(nThreads);
-    for (ForceSummary& s : threadSummary)
-    {
-        s.stresslet.fill(Mat3::Zero());
-    }
 
-    // Ambient flow at the particles, and per-thread buffers cleared
-    {
-        ScopedTime timer(times_.flowSampling);
-        #pragma omp parallel num_threads(nThreads)
-        {
-            const int t = omp_get_thread_num();
-            threadF_[t].assign(N, Vec3::Zero());
-            threadT_[t].assign(N, Vec3::Zero());
-            threadS_[t].assign(perParticle ? N : 0, Mat3::Zero());
-
-            #pragma omp for schedule(static)
-            for (std::size_t i = 0; i < N; ++i)
-            {
-                ambient_[i] = flow.sample(p.x[i]);
-            }
-        }
-    }
-
-    // One pair loop, compiled for the active models only
-    const int active =
-        (hydrodynamic && models_.lubrication ? 1 : 0)
-      | (models_.contact ? 2 : 0)
-      | (models_.repulsion ? 4 : 0) | (models_.attraction ? 8 : 0);
-
-    using Loop = void (ForceField::*)
-    (
-        const Particles&, const LeesEdwardsBox&, PairList&, double, bool,
-        std::vector<ForceSummary>&
-    );
-    static const Loop loops[16] =
-    {
-        &ForceField::pairLoop<false, false, false, false>,
-        &ForceField::pairLoop<true,  false, false, false>,
-        &ForceField::pairLoop<false, true,  false, false>,
-        &ForceField::pairLoop<true,  true,  false, false>,
-        &ForceField::pairLoop<false, false, true,  false>,
-        &ForceField::pairLoop<true,  false, true,  false>,
-        &ForceField::pairLoop<false, true,  true,  false>,
-        &ForceField::pairLoop<true,  true,  true,  false>,
-        &ForceField::pairLoop<false, false, false, true>,
-        &ForceField::pairLoop<true,  false, false, true>,
-        &ForceField::pairLoop<false, true,  false, true>,
-        &ForceField::pairLoop<true,  true,  false, true>,
-        &ForceField::pairLoop<false, false, true,  true>,
-        &ForceField::pairLoop<true,  false, true,  true>,
-        &ForceField::pairLoop<false, true,  true,  true>,
-        &ForceField::pairLoop<true,  true,  true,  true>
-    };
-    {
-        ScopedTime timer(times_.pairLoop);
-        (this->*loops[active])(p, box, pairs, dt, perParticle, threadSummary);
-    }
-    ScopedTime timer(times_.particleTerms);
-
-    // Stokes drag (A.1, 9a) plus the thread buffers, summed in thread order
-    ForceSummary summary = threadSummary[0];
-    for (int t = 1; t < nThreads; ++t)
-    {
-        for (int c = 0; c < nContributions; ++c)
-        {
-            summary.stresslet[c] += threadSummary[t].stresslet[c];
-        }
-        summary.nContacts += threadSummary[t].nContacts;
-        if (threadSummary[t].maxOverlap > summary.maxOverlap)
-        {
-            summary.maxOverlap = threadSummary[t].maxOverlap;
-            summary.maxOverlapPair[0] = threadSummary[t].maxOverlapPair[0];
-            summary.maxOverlapPair[1] = threadSummary[t].maxOverlapPair[1];
-        }
-    }
-
-    if (perParticle)
-    {
-        particleStresslet->resize(N);
-    }
-
-    std::vector<Mat3> stokesStresslet(nThreads, Mat3::Zero());
-    #pragma omp parallel num_threads(nThreads)
-    {
-        const int t = omp_get_thread_num();
-
-        #pragma omp for schedule(static)
-        for (std::size_t i = 0; i < N; ++i)
-        {
-            const StokesDrag::Result d = hydrodynamic
-              ? models_.drag.eval(p.a[i], p.u[i], p.omega[i], ambient_[i])
-              : StokesDrag::Result{Vec3::Zero(), Vec3::Zero(), Mat3::Zero()};
-            Vec3 F = d.F;
-            Vec3 T = d.T;
-            for (int s = 0; s < nThreads; ++s)
-            {
-                F += threadF_[s][i];
-                T += threadT_[s][i];
-            }
-            p.F[i] = F;
-            p.T[i] = T;
-            stokesStresslet[t] += d.S;
-            if (perParticle)
-            {
-                Mat3 S = d.S;
-                for (int s = 0; s < nThreads; ++s)
-                {
-                    S += threadS_[s][i];
-                }
-                (*particleStresslet)[i] = S;
-            }
-        }
-    }
-    for (int t = 0; t < nThreads; ++t)
-    {
-        summary.stresslet[stokes] += stokesStresslet[t];
-    }
-
-    return summary;
+ForceSummary ForceField::evaluate
+(
+    const Particles& p,
+    const LeesEdwardsBox& box,
+    const AmbientFlow& flow,
+    const PairList& near,
+    const PairList& far,
+    const Output& out,
+    Forces forces
+)
+{
+    return run(p, box, flow, near, nullptr, far, 0, forces, out);
 }
 
 } // namespace suspension

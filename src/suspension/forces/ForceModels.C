@@ -5,32 +5,66 @@
 namespace suspension
 {
 
-const char* contributionName(int c)
+const std::vector<std::string>& contributionNames()
 {
-    static const char* names[nContributions] =
-        {"stokes", "lubrication", "contact", "repulsion", "attraction"};
-    return names[c];
+    static const std::vector<std::string> names = []
+    {
+        std::vector<std::string> n{"stokes"};
+        forEachPairModelType([&](auto tag)
+        {
+            const std::string c = decltype(tag)::type::contribution;
+            if (std::find(n.begin(), n.end(), c) == n.end())
+            {
+                n.push_back(c);
+            }
+        });
+        return n;
+    }();
+    return names;
 }
 
 
-double ForceModels::interactionGap(double ai, double aj) const
+int contributionIndex(const char* name)
 {
-    double range = ai + aj;
-    if (lubrication) range = std::max(range, lubrication->range(ai, aj));
-    if (contact)     range = std::max(range, contact->range(ai, aj));
-    if (repulsion)   range = std::max(range, repulsion->range(ai, aj));
-    if (attraction)  range = std::max(range, attraction->range(ai, aj));
-    return range - ai - aj;
+    const std::vector<std::string>& names = contributionNames();
+    const auto it = std::find(names.begin(), names.end(), name);
+    if (it == names.end())
+    {
+        throw std::logic_error(std::string("unknown stress contribution ") + name);
+    }
+    return static_cast<int>(it - names.begin());
+}
+
+
+unsigned ForceModels::activeMask() const
+{
+    unsigned mask = 0;
+    unsigned bit = 1;
+    std::apply
+    (
+        [&](const auto&... m) { ((mask |= m ? bit : 0, bit <<= 1), ...); },
+        pair_
+    );
+    return mask;
+}
+
+
+double ForceModels::interactionGap() const
+{
+    double gap = 0;
+    forEach([&](const auto& m) { gap = std::max(gap, m.gap()); });
+    return gap;
 }
 
 
 std::string ForceModels::summary() const
 {
     std::string s = "stokesDrag";
-    if (lubrication) s += " lubrication";
-    if (contact)     s += " frictionalContact";
-    if (repulsion)   s += " electrostaticRepulsion";
-    if (attraction)  s += " vanDerWaalsAttraction";
+    forEach([&](const auto& m)
+    {
+        s += " ";
+        s += std::decay_t<decltype(m)>::typeName;
+    });
     return s;
 }
 

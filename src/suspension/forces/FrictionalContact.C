@@ -1,43 +1,11 @@
 #include "forces/FrictionalContact.H"
-#include "forces/PairRadii.H"
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 namespace suspension
 {
-
-namespace
-{
-    //- One step of a Luding spring stretch (eq. 5, Luding 2008): rotate xi
-    //  onto the tangent plane of n keeping its length, advance it by the
-    //  tangential velocity v over dt, cap its length at maxLength
-    void advanceStretch
-    (
-        Vec3& xi,
-        const Vec3& n,
-        const Vec3& v,
-        double dt,
-        double maxLength
-    )
-    {
-        const double length = xi.norm();
-        const Vec3 projected = xi - n.dot(xi)*n;
-        const double projectedLength = projected.norm();
-        xi = projectedLength > 0
-           ? Vec3(projected*(length/projectedLength))
-           : Vec3::Zero();
-
-        xi += v*dt;
-
-        const double newLength = xi.norm();
-        if (newLength > maxLength)
-        {
-            xi *= maxLength/newLength;
-        }
-    }
-}
-
 
 FrictionalContact::FrictionalContact(const Params& p)
 :
@@ -71,54 +39,75 @@ FrictionalContact::Params FrictionalContact::fromGroups
 }
 
 
-PairForce FrictionalContact::eval
-(
-    const PairGeometry& g,
-    const PairKinematics& kin,
-    ContactState& state,
-    double dt
-) const
+FrictionalContact::Params FrictionalContact::read(const ModelInput& input)
 {
-    PairForce f;
-    if (!inContact(g))
+    using Range = ModelInput::Range;
+    Params p = fromGroups
+    (
+        input.scalar
+        (
+            "stiffness", Range::positive(),
+            "k_hat = kn/(eta0 a0 gammaDot) (eq. 12)"
+        ),
+        input.scalar("stiffnessRatio", Range::positive(), "kt/kn (eq. 13)"),
+        input.scalar
+        (
+            "damping", Range::nonNegative(), "gamma_n gammaDot/kn (eq. 13)"
+        ),
+        input.scalar("friction", Range::nonNegative(), "mu_C (eq. 5)")
+    );
+    p.kr = p.kn*input.scalarOr
+    (
+        "rollingStiffnessRatio", 0, Range::nonNegative(),
+        "kr/kn, 0: no rolling resistance (appendix B)"
+    );
+    if (input.found("rollingFriction"))
     {
-        return f;
+        p.muR = input.scalar
+        (
+            "rollingFriction", Range::nonNegative(), "mu_r (appendix B)"
+        );
     }
+    return p;
+}
 
-    const Vec3& n = g.n;
 
-    // Normal spring-dashpot on i; h < 0 pushes i away from j      eq. (4a)
-    const double un = n.dot(kin.du);
-    const double fn = p_.kn*g.h + p_.gammaN*un;
-    const double FnMag = std::abs(fn);
+std::string FrictionalContact::describe() const
+{
+    std::ostringstream os;
+    os  << "kn = " << p_.kn << ", kt = " << p_.kt << ", gammaN = "
+        << p_.gammaN << ", muC = " << p_.muC << ", kr = " << p_.kr
+        << ", muR = " << muR_;
+    return os.str();
+}
 
-    // Relative velocity of the contact points, tangential         eq. (5)
-    const Vec3 ut =
-        kin.du - un*n - (g.ai*kin.omegai + g.aj*kin.omegaj).cross(n);
 
-    // Stick-and-slide stretch and force                            eqs. (5), (4b)
-    advanceStretch(state.xiT, n, ut, dt, p_.muC*FnMag/p_.kt);
-    const Vec3 Ft = p_.kt*state.xiT;
-
-    f.F = fn*n + Ft;
-    f.Ti = g.ai*n.cross(Ft);                                    // eq. (4d)
-    f.Tj = (g.aj/g.ai)*f.Ti;                                    // eq. (4e)
-
-    if (p_.kr > 0)
+void FrictionalContact::addTimeStepLimits(TimeStepLimitBuilder& limits) const
+{
+    using Mode = TimeStepLimitBuilder::Mode;
+    limits.addOverPairs("contact", [&](double ai, double aj)
     {
-        // Rolling velocity; xiR holds n x xi_r (see Description)   App. B
-        const double aij = harmonicRadius(g.ai, g.aj);
-        const Vec3 ur = aij*(n.cross(kin.omegai) - n.cross(kin.omegaj));
-        advanceStretch(state.xiR, n, n.cross(ur), dt, muR_*FnMag/p_.kr);
-
-        const Vec3 Fr = p_.kr*state.xiR.cross(n);               // eq. (B.1a)
-        const Vec3 Tr = aij*n.cross(Fr);                        // eq. (B.1b)
-        f.Ti += Tr;
-        f.Tj -= Tr;                                             // eq. (B.1c)
-    }
-
-    f.S = symm(outer(g.r, f.F));                                // eq. (9c)
-    return f;
+        if (limits.explicitHydrodynamics())
+        {
+            const double rho = limits.rho();
+            auto mass = [rho](double a) { return 4.0/3.0*pi*a*a*a*rho; };
+            return 2*contactTimeScale(p_, mass(ai), ai, mass(aj), aj)/pi;
+        }
+        // A pair in contact feels Stokes drag and, when on, lubrication
+        // at the regularised gap (A.6). Without friction (mu_C = 0) the
+        // tangential spring never pulls, and without rolling stiffness or
+        // friction neither does the rolling one
+        double dt = limits.springLimit(p_.kn, p_.gammaN, Mode::normal, ai, aj, 0);
+        if (p_.muC > 0)
+        {
+            dt = std::min(dt, limits.springLimit(p_.kt, 0, Mode::tangential, ai, aj, 0));
+        }
+        if (p_.kr > 0 && muR_ > 0)
+        {
+            dt = std::min(dt, limits.springLimit(p_.kr, 0, Mode::rolling, ai, aj, 0));
+        }
+        return dt;
+    });
 }
 
 

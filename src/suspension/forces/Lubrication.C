@@ -2,22 +2,11 @@
 
 #include "forces/ParamCheck.H"
 
+#include <algorithm>
+#include <sstream>
+
 namespace suspension
 {
-
-namespace
-{
-    //- Matrix of v -> n x v
-    Mat3 crossMatrix(const Vec3& n)
-    {
-        Mat3 m;
-        m <<       0, -n.z(),  n.y(),
-               n.z(),      0, -n.x(),
-              -n.y(),  n.x(),      0;
-        return m;
-    }
-}
-
 
 Lubrication::Lubrication(const Params& params)
 :
@@ -30,16 +19,44 @@ Lubrication::Lubrication(const Params& params)
 }
 
 
+void Lubrication::prepare(const std::vector<double>& radii)
+{
+    std::vector<double> distinct(radii);
+    std::sort(distinct.begin(), distinct.end());
+    distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
+    radii_.clear();
+    factors_.clear();
+    if (distinct.size() > maxTabulatedRadii)
+    {
+        return;
+    }
+    for (const double ai : distinct)
+    {
+        for (const double aj : distinct)
+        {
+            factors_.emplace_back(ai, aj, params_.eta);
+        }
+    }
+    radii_ = std::move(distinct);
+}
+
+
 LubricationCoefficients Lubrication::coefficients(const PairGeometry& g) const
 {
     const double xi = 2*g.h/(g.ai + g.aj);      // d*_ij (A.6)
-    return LubricationCoefficients
-    (
-        g.ai,
-        g.aj,
-        LubricationCoefficients::Gap::make(xi, params_.epsilon, params_.terms),
-        params_.eta
-    );
+    const LubricationCoefficients::Gap gap =
+        LubricationCoefficients::Gap::make(xi, params_.epsilon, params_.terms);
+
+    const std::size_t n = radii_.size();
+    std::size_t i = 0;
+    std::size_t j = 0;
+    while (i < n && radii_[i] != g.ai) ++i;
+    while (j < n && radii_[j] != g.aj) ++j;
+    if (i < n && j < n)
+    {
+        return factors_[i*n + j].at(gap);
+    }
+    return LubricationCoefficients(g.ai, g.aj, gap, params_.eta);
 }
 
 
@@ -175,6 +192,60 @@ Lubrication::PairMatrix Lubrication::resistanceMatrix
 ) const
 {
     return resistanceMatrix(coefficients(g), g.n);
+}
+
+Lubrication::Params Lubrication::read(const ModelInput& input)
+{
+    Params p;
+    p.deltaLub = input.scalar
+    (
+        "delta", ModelInput::Range::positive(),
+        "delta_lub/a0: largest surface gap with lubrication (fig. 1)"
+    );
+    p.epsilon = input.scalar
+    (
+        "epsilon", ModelInput::Range::positive(),
+        "gap regularisation (A.6)"
+    );
+    p.terms = input.word
+    (
+        "terms", {"leading", "extended"}, true,
+        "orders of the near-contact expansions kept"
+    ) == "extended" ? Terms::extended : Terms::leading;
+    return p;
+}
+
+
+std::string Lubrication::describe() const
+{
+    std::ostringstream os;
+    os  << "deltaLub = " << params_.deltaLub << ", epsilon = "
+        << params_.epsilon << ", terms "
+        << (params_.terms == Terms::leading ? "leading" : "extended");
+    return os.str();
+}
+
+
+void Lubrication::addTimeStepLimits(TimeStepLimitBuilder& limits) const
+{
+    if (limits.explicitHydrodynamics())
+    {
+        // The squeeze mode of a touching pair: relaxation with tau
+        // (TimeStepLimits.H), stable for dt < 2 tau
+        limits.addOverPairs("lubrication", [&](double ai, double aj)
+        {
+            return 2*limits.pairRelaxationTime(ai, aj);
+        });
+    }
+    else if (limits.maxVelocityGradient() > 0)
+    {
+        // Accuracy: a step moves a touching pair by at most 10
+        // regularised gaps at the default safety (TimeStepLimits.H)
+        limits.add
+        (
+            "lubricationGap", 25*params_.epsilon/limits.maxVelocityGradient()
+        );
+    }
 }
 
 } // namespace suspension

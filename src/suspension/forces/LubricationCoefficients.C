@@ -307,4 +307,45 @@ LubricationCoefficients::LubricationCoefficients
     YH = entries<YHFunction>(r, eta, gap);
 }
 
+
+
+LubricationFactors::LubricationFactors(double ai, double aj, double eta)
+:
+    basis
+    {
+        LubricationCoefficients(ai, aj, Gap{1, 0, 0, 0}, eta),
+        LubricationCoefficients(ai, aj, Gap{0, 1, 0, 0}, eta),
+        LubricationCoefficients(ai, aj, Gap{0, 0, 1, 0}, eta),
+        LubricationCoefficients(ai, aj, Gap{0, 0, 0, 1}, eta)
+    }
+{}
+
+
+LubricationCoefficients LubricationFactors::at
+(
+    const LubricationCoefficients::Gap& gap
+) const
+{
+    using C = LubricationCoefficients;
+    using Entries = C::Entries;
+    static constexpr Entries C::* functions[] =
+        {&C::XA, &C::YA, &C::YB, &C::YC, &C::XG, &C::YG, &C::YH};
+    const double g[4] = {gap.inv, gap.log, gap.logX, gap.xiLog};
+    C c;
+    for (Entries C::* f : functions)
+    {
+        Entries v{0, 0, 0, 0};
+        for (int k = 0; k < 4; ++k)
+        {
+            const Entries& b = basis[k].*f;
+            v.ii += g[k]*b.ii;
+            v.ij += g[k]*b.ij;
+            v.ji += g[k]*b.ji;
+            v.jj += g[k]*b.jj;
+        }
+        c.*f = v;
+    }
+    return c;
+}
+
 } // namespace suspension

@@ -1,7 +1,9 @@
 #include "forces/VanDerWaalsAttraction.H"
+#include "forces/ElectroChemicalScales.H"
 #include "forces/PairRadii.H"
 
 #include <algorithm>
+#include <sstream>
 
 namespace suspension
 {
@@ -20,10 +22,6 @@ VanDerWaalsAttraction::VanDerWaalsAttraction(const Params& p)
 PairForce VanDerWaalsAttraction::eval(const PairGeometry& g) const
 {
     PairForce f;
-    if (g.dist >= range(g.ai, g.aj))
-    {
-        return f;
-    }
 
     // Overlap (h < 0) feels the contact value                      eq. (7a)
     const double abar = harmonicRadius(g.ai, g.aj);
@@ -32,6 +30,52 @@ PairForce VanDerWaalsAttraction::eval(const PairGeometry& g) const
     f.F = p_.A*abar/(12*(h*h + eps*eps))*g.n;
     f.S = symm(outer(g.r, f.F));                                // eq. (9d)
     return f;
+}
+
+VanDerWaalsAttraction::Params VanDerWaalsAttraction::read
+(
+    const ModelInput& input
+)
+{
+    using Range = ModelInput::Range;
+    ElectroChemicalScales::Params scales =
+        ElectroChemicalScales::read(input.parent()).params();
+    scales.epsilonFraction = input.scalarOr
+    (
+        "epsilon", scales.epsilonFraction, Range::positive(),
+        "eps/abar, regularisation of eq. (7)"
+    );
+    Params p = ElectroChemicalScales(scales).attraction();
+    p.cutoffGap = input.scalar("cutoff", Range::nonNegative(), "cut-off gap/a0");
+    return p;
+}
+
+
+std::string VanDerWaalsAttraction::describe() const
+{
+    std::ostringstream os;
+    os  << "A = " << p_.A << ", eps/abar = " << p_.epsilonFraction
+        << ", cut-off gap " << p_.cutoffGap;
+    return os.str();
+}
+
+
+void VanDerWaalsAttraction::addTimeStepLimits
+(
+    TimeStepLimitBuilder& limits
+) const
+{
+    limits.addOverPairs("attraction", [&](double ai, double aj)
+    {
+        return limits.centralForceLimit
+        (
+            [&](double h)
+            {
+                return eval(PairGeometry::make(Vec3(ai + aj + h, 0, 0), ai, aj)).F.x();
+            },
+            ai, aj, 0.1*std::min(ai, aj)
+        );
+    });
 }
 
 } // namespace suspension

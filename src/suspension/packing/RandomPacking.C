@@ -1,8 +1,7 @@
 #include "packing/RandomPacking.H"
 #include "packing/SizeDistribution.H"
 #include "search/NeighbourSearch.H"
-
-#include <omp.h>
+#include "core/Parallel.H"
 
 #include <algorithm>
 #include <cmath>
@@ -56,22 +55,23 @@ namespace
         return static_cast<double>(rng() >> 11)*0x1.0p-53;
     }
 
-    //- Sum of f(i) over [0, N) starting from zero: one partial sum per
-    //  thread over its static chunk, added in thread order. f(i) may update
-    //  the entries of particle i.
+    //- Sum of f(i) over [0, N) starting from zero, per reduction block and
+    //  the blocks in order (core/Parallel.H). f(i) may update the entries
+    //  of particle i.
     template<class T, class Term>
     T sum(std::size_t N, const T& zero, const Term& f)
     {
-        std::vector<T> partial(omp_get_max_threads(), zero);
-        #pragma omp parallel if(N >= searchParallelMin)
+        std::vector<T> partial(reductionBlocks(N), zero);
+        #pragma omp parallel for schedule(static) if(threaded(N))
+        for (std::size_t b = 0; b < partial.size(); ++b)
         {
             T s = zero;
-            #pragma omp for schedule(static)
-            for (std::size_t i = 0; i < N; ++i)
+            const std::size_t end = std::min(N, (b + 1)*reductionBlock);
+            for (std::size_t i = b*reductionBlock; i < end; ++i)
             {
                 s += f(i);
             }
-            partial[omp_get_thread_num()] = s;
+            partial[b] = s;
         }
         T total = zero;
         for (const T& s : partial)
@@ -101,8 +101,8 @@ namespace
     }
 
     //- Harmonic overlap forces towards the target gap hTarget into p.F;
-    //  returns the number of pairs with gap below minGap. Per-thread buffers
-    //  are summed in thread order.
+    //  returns the number of pairs with gap below minGap. The two passes of
+    //  core/Parallel.H: the force on j waits in slotF.
     std::size_t overlapForces
     (
         Particles& p,
@@ -110,19 +110,18 @@ namespace
         const PairList& list,
         double hTarget,
         double minGap,
-        std::vector<std::vector<Vec3>>& threadF
+        std::vector<Vec3>& slotF
     )
     {
         const std::size_t N = p.size();
         std::size_t violations = 0;
-        #pragma omp parallel if(N >= searchParallelMin)
+        slotF.resize(list.nPairs());
+        #pragma omp parallel if(threaded(N))
         {
-            std::vector<Vec3>& F = threadF[omp_get_thread_num()];
-            F.assign(N, Vec3::Zero());
-
             #pragma omp for schedule(static) reduction(+:violations)
             for (std::size_t i = 0; i < N; ++i)
             {
+                Vec3 Fi = Vec3::Zero();
                 for (std::size_t k = list.offset[i]; k < list.offset[i + 1]; ++k)
                 {
                     const std::size_t j = list.j[k];
@@ -139,22 +138,26 @@ namespace
                     if (d2 < target*target && d2 > 0)
                     {
                         const Vec3 f = (target/std::sqrt(d2) - 1)*r;
-                        F[i] -= f;
-                        F[j] += f;
+                        Fi -= f;
+                        slotF[k] = f;
+                    }
+                    else
+                    {
+                        slotF[k] = Vec3::Zero();
                     }
                 }
+                p.F[i] = Fi;
             }
 
-            const int nThreads = omp_get_num_threads();
             #pragma omp for schedule(static)
-            for (std::size_t i = 0; i < N; ++i)
+            for (std::size_t j = 0; j < N; ++j)
             {
-                Vec3 Fi = Vec3::Zero();
-                for (int t = 0; t < nThreads; ++t)
+                Vec3 Fj = Vec3::Zero();
+                for (std::size_t t = list.offsetT[j]; t < list.offsetT[j + 1]; ++t)
                 {
-                    Fi += threadF[t][i];
+                    Fj += slotF[list.slotT[t]];
                 }
-                p.F[i] = Fi;
+                p.F[j] += Fj;
             }
         }
         return violations;
@@ -178,13 +181,13 @@ namespace
     {
         const std::size_t N = p.size();
         const std::vector<Vec3> Uinf(N, Vec3::Zero());
-        std::vector<std::vector<Vec3>> threadF(omp_get_max_threads());
+        std::vector<Vec3> slotF;
 
         // Velocity mixing u <- keep u + mix F, then the move x += dt u,
         // with the path accounting of the Verlet criterion
         auto mixAndMove = [&](double keep, double mix, double dt)
         {
-            #pragma omp parallel for schedule(static) if(N >= searchParallelMin)
+            #pragma omp parallel for schedule(static) if(threaded(N))
             for (std::size_t i = 0; i < N; ++i)
             {
                 p.u[i] = keep*p.u[i] + mix*p.F[i];
@@ -201,7 +204,7 @@ namespace
         for (std::size_t step = 0; step < maxStageIterations; ++step)
         {
             search.update(p, box, list, 0);
-            if (overlapForces(p, box, list, hTarget, minGap, threadF) == 0)
+            if (overlapForces(p, box, list, hTarget, minGap, slotF) == 0)
             {
                 return Stage::overlapFree;
             }

@@ -1,5 +1,7 @@
 #include "search/CellList.H"
 
+#include "core/Parallel.H"
+
 #include <omp.h>
 
 #include <algorithm>
@@ -143,7 +145,7 @@ namespace
         std::vector<std::vector<std::uint32_t>> partners(K);
         std::vector<std::uint32_t> count(N);
 
-        #pragma omp parallel for schedule(dynamic) if(N >= searchParallelMin)
+        #pragma omp parallel for schedule(dynamic) if(threaded(N))
         for (std::size_t k = 0; k < K; ++k)
         {
             fill(k, partners[k], count);
@@ -167,7 +169,7 @@ namespace
         list.offset[N] = static_cast<std::uint32_t>(total);
 
         list.j.resize(total);
-        #pragma omp parallel for schedule(static) if(N >= searchParallelMin)
+        #pragma omp parallel for schedule(static) if(threaded(N))
         for (std::size_t k = 0; k < K; ++k)
         {
             std::copy
@@ -176,7 +178,9 @@ namespace
                 list.j.begin() + list.offset[rowBegin[k]]
             );
         }
-        list.history.assign(total, ContactState());
+        list.offsetT.clear();
+        list.slotT.clear();
+        list.history.clear();
     }
 
     void checkCount(std::size_t N)

@@ -1,5 +1,7 @@
 #include "search/NeighbourSearch.H"
 
+#include "core/Parallel.H"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -24,11 +26,6 @@ namespace
         return a.lo < b.lo || (a.lo == b.lo && a.hi < b.hi);
     }
 
-    bool active(const ContactState& s)
-    {
-        return s.xiT != Vec3::Zero() || s.xiR != Vec3::Zero();
-    }
-
     ContactState reversed(const ContactState& s)
     {
         return ContactState{-s.xiT, -s.xiR};
@@ -37,8 +34,7 @@ namespace
     //- Throws unless `list` is empty or a consistent list of the particles
     void checkList(const Particles& p, const PairList& list)
     {
-        const bool empty =
-            list.offset.empty() && list.j.empty() && list.history.empty();
+        const bool empty = list.offset.empty() && list.j.empty();
         const bool consistent =
             !list.offset.empty()
          && list.nParticles() == p.size()
@@ -65,7 +61,7 @@ namespace
             for (std::size_t k = list.offset[i]; k < list.offset[i + 1]; ++k)
             {
                 const ContactState& s = list.history[k];
-                if (active(s))
+                if (s.active())
                 {
                     const std::int64_t a = p.id[i];
                     const std::int64_t b = p.id[list.j[k]];
@@ -108,7 +104,7 @@ namespace
             return carried;
         }
         #pragma omp parallel for reduction(+:carried) schedule(static) \
-            if(p.size() >= searchParallelMin)
+            if(threaded(p.size()))
         for (std::size_t i = 0; i < list.nParticles(); ++i)
         {
             for (std::size_t k = list.offset[i]; k < list.offset[i + 1]; ++k)
@@ -127,6 +123,71 @@ namespace
         }
         return carried;
     }
+
+    //- The slots of the half list `all` with |r| < a_i + a_j + gap, into
+    //  the half list `near`
+    void nearPairs
+    (
+        const Particles& p,
+        const LeesEdwardsBox& box,
+        const PairList& all,
+        double gap,
+        PairList& near
+    )
+    {
+        const std::size_t N = all.nParticles();
+        near = PairList();
+        near.offset.assign(N + 1, 0);
+        for (std::size_t i = 0; i < N; ++i)
+        {
+            for (std::uint32_t k = all.offset[i]; k < all.offset[i + 1]; ++k)
+            {
+                const std::uint32_t j = all.j[k];
+                Vec3 r = p.x[j] - p.x[i];
+                box.minimumImage(r);
+                const double R = p.a[i] + p.a[j] + gap;
+                if (r.squaredNorm() < R*R)
+                {
+                    near.j.push_back(j);
+                }
+            }
+            near.offset[i + 1] = static_cast<std::uint32_t>(near.j.size());
+        }
+    }
+
+    //- The half list as a full list: the partners of i are those of the
+    //  slots (., i), in slot order, then those of i's own slots
+    void symmetrise(PairList& list)
+    {
+        list.transpose();
+        const std::size_t N = list.nParticles();
+        PairList full;
+        full.offset.assign(N + 1, 0);
+        full.j.reserve(2*list.nPairs());
+        std::vector<std::uint32_t> first(list.nPairs());
+        for (std::size_t i = 0; i < N; ++i)
+        {
+            for (std::uint32_t k = list.offset[i]; k < list.offset[i + 1]; ++k)
+            {
+                first[k] = static_cast<std::uint32_t>(i);
+            }
+        }
+        for (std::size_t i = 0; i < N; ++i)
+        {
+            for (std::uint32_t t = list.offsetT[i]; t < list.offsetT[i + 1]; ++t)
+            {
+                full.j.push_back(first[list.slotT[t]]);
+            }
+            full.j.insert
+            (
+                full.j.end(),
+                list.j.begin() + list.offset[i],
+                list.j.begin() + list.offset[i + 1]
+            );
+            full.offset[i + 1] = static_cast<std::uint32_t>(full.j.size());
+        }
+        list = std::move(full);
+    }
 }
 
 
@@ -140,13 +201,19 @@ NeighbourSearch::NeighbourSearch(const Params& params)
     range_(0),
     stats_()
 {
-    if (!(params.gap >= 0) || !std::isfinite(params.gap)
-     || !(params.skin >= 0) || !std::isfinite(params.skin))
+    if
+    (
+        !(params.gap >= 0) || !std::isfinite(params.gap)
+     || !(params.skin >= 0) || !std::isfinite(params.skin)
+     || !(params.farGap >= 0) || !std::isfinite(params.farGap)
+    )
     {
         throw std::invalid_argument
         (
-            "NeighbourSearch: gap and skin must be finite and >= 0, got gap "
-          + std::to_string(params.gap) + ", skin " + std::to_string(params.skin)
+            "NeighbourSearch: gap, farGap and skin must be finite and >= 0,"
+            " got gap " + std::to_string(params.gap) + ", farGap "
+          + std::to_string(params.farGap) + ", skin "
+          + std::to_string(params.skin)
         );
     }
 }
@@ -176,7 +243,7 @@ void NeighbourSearch::accumulate
     }
     double m = maxPath_;
     #pragma omp parallel for reduction(max:m) schedule(static) \
-        if(path_.size() >= searchParallelMin)
+        if(threaded(path_.size()))
     for (std::size_t i = 0; i < path_.size(); ++i)
     {
         path_[i] += (particles.u[i] - Uinf[i]).norm()*dt;
@@ -205,20 +272,20 @@ bool NeighbourSearch::update
 (
     Particles& particles,
     const LeesEdwardsBox& box,
-    PairList& list,
+    PairList& near,
     double maxGradU
 )
 {
     const bool current =
         cells_
      && path_.size() == particles.size()
-     && list.nParticles() == particles.size()
+     && near.nParticles() == particles.size()
      && box.L() == cells_->L();
     if (current && !needsRebuild(maxGradU))
     {
         return false;
     }
-    rebuild(particles, box, list);
+    rebuild(particles, box, near);
     return true;
 }
 
@@ -227,22 +294,36 @@ void NeighbourSearch::rebuild
 (
     Particles& particles,
     const LeesEdwardsBox& box,
-    PairList& list
+    PairList& near
 )
 {
-    checkList(particles, list);
-    const std::vector<Contact> contacts = collectContacts(particles, list);
+    checkList(particles, near);
+    const std::vector<Contact> contacts = collectContacts(particles, near);
 
+    const bool farList = params_.farGap > params_.gap;
     const double gap = params_.gap + params_.skin;
-    const double range = 2*particles.maxRadius() + gap;
+    const double searchGap = (farList ? params_.farGap : params_.gap) + params_.skin;
+    const double range = 2*particles.maxRadius() + searchGap;
     if (!cells_ || cells_->range() != range || cells_->L() != box.L())
     {
         cells_.emplace(box, range);
     }
     particles.permute(cells_->sort(particles.x));
-    cells_->findPairs(particles, box, gap, params_.stencil, list);
+    if (farList)
+    {
+        cells_->findPairs(particles, box, searchGap, params_.stencil, far_);
+        nearPairs(particles, box, far_, gap, near);
+        symmetrise(far_);
+    }
+    else
+    {
+        cells_->findPairs(particles, box, gap, params_.stencil, near);
+        far_ = PairList();
+    }
+    near.transpose();
+    near.history.assign(near.nPairs(), ContactState());
 
-    const std::size_t carried = restoreContacts(contacts, particles, list);
+    const std::size_t carried = restoreContacts(contacts, particles, near);
 
     path_.assign(particles.size(), 0.0);
     maxPath_ = 0;
@@ -258,7 +339,8 @@ void NeighbourSearch::rebuild
 
 std::size_t NeighbourSearch::bytes() const
 {
-    return (cells_ ? cells_->bytes() : 0) + path_.capacity()*sizeof(double);
+    return (cells_ ? cells_->bytes() : 0) + path_.capacity()*sizeof(double)
+         + far_.bytes();
 }
 
 } // namespace suspension

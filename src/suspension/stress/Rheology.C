@@ -16,7 +16,10 @@ Rheology::Rheology
     Sigma(0, 1) = Sigma(1, 0) = eta0*gammaDot;
 
     const double scale = eta0*gammaDot;
-    for (int c = 0; c < nContributions; ++c)
+    const std::size_t nC = summary.stresslet.size();
+    part.resize(nC);
+    etaRPart.resize(nC);
+    for (std::size_t c = 0; c < nC; ++c)
     {
         part[c] = summary.stresslet[c]/volume;
         Sigma += part[c];

@@ -29,9 +29,9 @@ Foam::rheologyFile::rheologyFile
     {
         writeTabbed(os, column);
     }
-    for (int c = 0; c < suspension::nContributions; ++c)
+    for (const std::string& c : suspension::contributionNames())
     {
-        writeTabbed(os, word("etaR_") + suspension::contributionName(c));
+        writeTabbed(os, word("etaR_" + c));
     }
     for
     (

@@ -1,8 +1,8 @@
 #include "suspensionProperties.H"
+#include "forceModelsReader.H"
 #include "inputChecks.H"
 #include "Enum.H"
 #include "Time.H"
-#include "forces/ElectroChemicalScales.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -15,12 +15,6 @@ namespace
 {
 
 using namespace Foam;
-
-const Enum<suspension::LubricationTerms> lubricationTerms
-({
-    {suspension::LubricationTerms::leading, "leading"},
-    {suspension::LubricationTerms::extended, "extended"},
-});
 
 const Enum<suspension::Integrator> integrators
 ({
@@ -35,139 +29,6 @@ const Enum<suspension::Stencil> stencils
     {suspension::Stencil::full, "full"},
     {suspension::Stencil::bruteForce, "bruteForce"},
 });
-
-
-//- Lubrication (eq. 3, appendix A), if active
-void readLubrication(const dictionary& dict, suspension::ForceModels& models)
-{
-    checkEntries(dict, {"active", "delta", "epsilon", "terms"});
-    if (!dict.get<bool>("active"))
-    {
-        return;
-    }
-    suspension::Lubrication::Params p;
-    p.deltaLub = getScalarIn(dict, "delta", interval::positive());
-    p.epsilon = getScalarIn(dict, "epsilon", interval::positive());
-    p.terms = getEnum(dict, "terms", lubricationTerms);
-    models.lubrication.emplace
-    (
-        engineCall(dict, [&]{ return suspension::Lubrication(p); })
-    );
-}
-
-
-//- Frictional contact (eqs. 4-5, appendix B) from the groups of eqs. 12-13
-void readContact(const dictionary& dict, suspension::ForceModels& models)
-{
-    checkEntries
-    (
-        dict,
-        {
-            "active", "stiffness", "stiffnessRatio", "damping", "friction",
-            "rollingStiffnessRatio", "rollingFriction"
-        }
-    );
-    if (!dict.get<bool>("active"))
-    {
-        return;
-    }
-    suspension::FrictionalContact::Params p =
-        suspension::FrictionalContact::fromGroups
-        (
-            getScalarIn(dict, "stiffness", interval::positive()),
-            getScalarIn(dict, "stiffnessRatio", interval::positive()),
-            getScalarIn(dict, "damping", interval::nonNegative()),
-            getScalarIn(dict, "friction", interval::nonNegative())
-        );
-    p.kr = p.kn*getScalarInOrDefault
-    (
-        dict, "rollingStiffnessRatio", 0, interval::nonNegative()
-    );
-    if (dict.found("rollingFriction", keyType::LITERAL))
-    {
-        p.muR = getScalarIn(dict, "rollingFriction", interval::nonNegative());
-    }
-    models.contact.emplace
-    (
-        engineCall(dict, [&]{ return suspension::FrictionalContact(p); })
-    );
-}
-
-
-//- Repulsion (eq. 6) and attraction (eq. 7) from the groups of eq. 14
-void readElectroChemical
-(
-    const dictionary& dict,
-    suspension::ForceModels& models
-)
-{
-    checkEntries
-    (
-        dict, {"shearRateRatio", "forceRatio", "repulsion", "attraction"}
-    );
-    const dictionary& repDict = dict.subDict("repulsion");
-    const dictionary& attDict = dict.subDict("attraction");
-    checkEntries(repDict, {"active", "debyeLength", "cutoff"});
-    checkEntries(attDict, {"active", "epsilon", "cutoff"});
-
-    const bool attraction = attDict.get<bool>("active");
-
-    suspension::ElectroChemicalScales::Params sp;
-    sp.shearRateRatio = getScalarIn(dict, "shearRateRatio", interval::positive());
-    sp.forceRatio = getScalarIn(dict, "forceRatio", interval::positive());
-    if (attraction)
-    {
-        sp.epsilonFraction = getScalarInOrDefault
-        (
-            attDict, "epsilon", sp.epsilonFraction, interval::positive()
-        );
-    }
-    const suspension::ElectroChemicalScales scales
-    (
-        engineCall(dict, [&]{ return suspension::ElectroChemicalScales(sp); })
-    );
-
-    if (repDict.get<bool>("active"))
-    {
-        suspension::ElectrostaticRepulsion::Params p = scales.repulsion
-        (
-            getScalarIn(repDict, "debyeLength", interval::positive())
-        );
-        p.cutoffFactor = getScalarIn(repDict, "cutoff", interval::positive());
-        models.repulsion.emplace
-        (
-            engineCall
-            (
-                repDict, [&]{ return suspension::ElectrostaticRepulsion(p); }
-            )
-        );
-    }
-    if (attraction)
-    {
-        suspension::VanDerWaalsAttraction::Params p = scales.attraction();
-        p.cutoffGap = getScalarIn(attDict, "cutoff", interval::nonNegative());
-        models.attraction.emplace
-        (
-            engineCall
-            (
-                attDict, [&]{ return suspension::VanDerWaalsAttraction(p); }
-            )
-        );
-    }
-}
-
-
-suspension::ForceModels readModels(const dictionary& dict)
-{
-    suspension::ForceModels models;
-    readLubrication(dict.subDict("lubrication"), models);
-    readContact(dict.subDict("contact"), models);
-    if (dict.found("electroChemical", keyType::LITERAL))
-    {
-        readElectroChemical(dict.subDict("electroChemical"), models);
-    }
-    return models;
-}
 
 
 //- Integration parameters; rho = St in reduced units (eq. 11)
@@ -273,7 +134,7 @@ Foam::suspensionProperties::suspensionProperties(const objectRegistry& obr)
     ),
     units_(*this),
     population_(subDict("population"), units_.lengthUnit()),
-    models_(readModels(units_.reduced())),
+    models_(forceModelsReader(units_.reduced()).models()),
     simulationParams_
     (
         readIntegration
@@ -302,7 +163,7 @@ Foam::suspensionProperties::suspensionProperties(const objectRegistry& obr)
 
 Foam::scalar Foam::suspensionProperties::neighbourCutoff(const scalar aMax) const
 {
-    return 2*aMax + models_.interactionGap(aMax, aMax) + simulationParams_.skin;
+    return 2*aMax + models_.interactionGap() + simulationParams_.skin;
 }
 
 
@@ -322,33 +183,11 @@ void Foam::suspensionProperties::report(Ostream& os) const
         << "    Stokes drag  eta0 = " << m.drag.params().eta
         << ", rho = St = " << s.rho << nl;
 
-    if (m.lubrication)
+    m.forEach([&](const auto& model)
     {
-        const auto& p = m.lubrication->params();
-        os  << "    lubrication  deltaLub = " << p.deltaLub
-            << ", epsilon = " << p.epsilon << ", terms "
-            << lubricationTerms.get(p.terms) << nl;
-    }
-    if (m.contact)
-    {
-        const auto& p = m.contact->params();
-        os  << "    contact      kn = " << p.kn << ", kt = " << p.kt
-            << ", gammaN = " << p.gammaN << ", muC = " << p.muC
-            << ", kr = " << p.kr << ", muR = " << m.contact->muR() << nl;
-    }
-    if (m.repulsion)
-    {
-        const auto& p = m.repulsion->params();
-        os  << "    repulsion    F_ER = " << p.FER << ", lambdaD = "
-            << p.lambdaD << ", cut-off gap " << p.cutoffFactor*p.lambdaD
-            << " (" << p.cutoffFactor << " lambdaD)" << nl;
-    }
-    if (m.attraction)
-    {
-        const auto& p = m.attraction->params();
-        os  << "    attraction   A = " << p.A << ", eps/abar = "
-            << p.epsilonFraction << ", cut-off gap " << p.cutoffGap << nl;
-    }
+        os  << "    " << std::decay_t<decltype(model)>::typeName << "  "
+            << model.describe().c_str() << nl;
+    });
     os  << "    integration  " << integrators.get(s.integrator) << ", deltaT "
         << (s.deltaT > 0 ? Foam::name(s.deltaT) : word("auto"))
         << ", safety " << s.safety << ", skin " << s.skin << ", stencil "
