@@ -28,6 +28,7 @@ namespace
 LeesEdwardsBox::LeesEdwardsBox(const Vec3& L, double gammaDot)
 :
     L_(L),
+    invL_(L.cwiseInverse()),
     gammaDot_(gammaDot),
     offset_(0)
 {

@@ -20,16 +20,11 @@ ElectrostaticRepulsion::ElectrostaticRepulsion(const Params& p)
 }
 
 
-PairForce ElectrostaticRepulsion::eval(const PairGeometry& g) const
+double ElectrostaticRepulsion::force(const PairGeometry& g) const
 {
-    PairForce f;
-
     // Overlap (h < 0) feels the contact value                      eq. (6a)
     const double abar = harmonicRadius(g.ai, g.aj);
-    const double h = std::max(g.h, 0.0);
-    f.F = -p_.FER*abar*std::exp(-h/p_.lambdaD)*g.n;
-    f.S = symm(outer(g.r, f.F));                                // eq. (9d)
-    return f;
+    return -p_.FER*abar*std::exp(-std::max(g.h, 0.0)/p_.lambdaD);
 }
 
 

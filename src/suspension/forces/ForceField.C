@@ -3,7 +3,9 @@
 #include "core/Parallel.H"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
+#include <utility>
 
 namespace suspension
 {
@@ -67,6 +69,29 @@ namespace
         {
             return model.eval(g);
         }
+    }
+
+    //- f(std::integral_constant<std::size_t, m>()) for m = 0 ... n - 1
+    template<std::size_t... I, class F>
+    void forEachIndex(std::index_sequence<I...>, F&& f)
+    {
+        (f(std::integral_constant<std::size_t, I>()), ...);
+    }
+
+    template<std::size_t n, class F>
+    void forEachIndex(F&& f)
+    {
+        forEachIndex(std::make_index_sequence<n>(), std::forward<F>(f));
+    }
+
+    //- The symmetric matrix of the entries xx, xy, xz, yy, yz, zz
+    Mat3 symmetricMatrix(const double w[6])
+    {
+        Mat3 S;
+        S << w[0], w[1], w[2],
+             w[1], w[3], w[4],
+             w[2], w[4], w[5];
+        return S;
     }
 
     //- Rows [begin, end) of reduction block b
@@ -169,7 +194,7 @@ void ForceField::nearPass
     const Particles& p,
     const LeesEdwardsBox& box,
     const PairList& near,
-    ContactState* history,
+    PairList* history,
     double dt,
     const Output& out
 )
@@ -188,7 +213,12 @@ void ForceField::nearPass
         const double maxGap = std::max({std::get<const Ms*>(ms)->gap()...});
         const double imageVelocity = box.imageVelocity();
         const bool perParticle = out.S != nullptr;
-        const ContactState* historyIn = near.history.data();
+        const bool readHistory = anyHistory<Ms...> && !near.contactOf.empty();
+        const bool advanceHistory = anyHistory<Ms...> && history;
+        if (advanceHistory)
+        {
+            blockContacts_.resize(reductionBlocks(N));
+        }
 
         slotForce_.resize(near.nPairs());
         slotOn_.resize(near.nPairs());
@@ -204,6 +234,10 @@ void ForceField::nearPass
                 s.setZero();
             }
             BlockStats& stats = blockStats_[b];
+            if (advanceHistory)
+            {
+                blockContacts_[b].clear();
+            }
             const BlockRange rows(b, N);
             for (std::size_t i = rows.begin; i < rows.end; ++i)
             {
@@ -220,13 +254,10 @@ void ForceField::nearPass
                     const double R = p.a[i] + p.a[j] + maxGap;
                     if (!(r.squaredNorm() < R*R))
                     {
-                        if constexpr (anyHistory<Ms...>)
+                        if (advanceHistory)
                         {
                             // eq. (5): a pair out of contact has no stretch
-                            if (history && history[k].active())
-                            {
-                                history[k] = ContactState();
-                            }
+                            history->contactOf[k] = PairList::noContact;
                         }
                         slotOn_[k] = 0;
                         continue;
@@ -248,7 +279,7 @@ void ForceField::nearPass
                     PairForce total;
                     ContactState next;
                     const ContactState& old =
-                        historyIn ? historyIn[k] : next;
+                        readHistory ? near.history(k) : next;
                     auto applyModels = [&](const PairKinematics* kin)
                     {
                         std::size_t m = 0;
@@ -263,7 +294,10 @@ void ForceField::nearPass
                                     total.F += f.F;
                                     total.Ti += f.Ti;
                                     total.Tj += f.Tj;
-                                    total.S += f.S;
+                                    if (perParticle)
+                                    {
+                                        total.S += f.S;
+                                    }
                                     S[m] += f.S;
                                 }
                                 ++m;
@@ -288,11 +322,13 @@ void ForceField::nearPass
                     {
                         applyModels(nullptr);
                     }
-                    if constexpr (anyHistory<Ms...>)
+                    if (advanceHistory)
                     {
-                        if (history && (next.active() || history[k].active()))
+                        // The state after the step joins the next pool
+                        history->contactOf[k] = PairList::noContact;
+                        if (next.active())
                         {
-                            history[k] = next;
+                            blockContacts_[b].push_back({k, next});
                         }
                     }
 
@@ -315,6 +351,22 @@ void ForceField::nearPass
             {
                 blockS_[b*nC + contribution[m]] += S[m];
             }
+        }
+
+        // The next pool: the contacts in block (so slot) order
+        if (advanceHistory)
+        {
+            pool_.clear();
+            for (const std::vector<NewContact>& contacts : blockContacts_)
+            {
+                for (const NewContact& c : contacts)
+                {
+                    history->contactOf[c.slot] =
+                        static_cast<std::uint32_t>(pool_.size());
+                    pool_.push_back(c.state);
+                }
+            }
+            std::swap(history->contacts, pool_);
         }
 
         // Pass 2: the parts of j, in the transposed order of the slots
@@ -363,61 +415,78 @@ void ForceField::farPass
     }
     else if constexpr (sizeof...(Ms) > 0)
     {
+        constexpr std::size_t nM = sizeof...(Ms);
         const std::size_t N = p.size();
         const std::size_t nC = contributionNames().size();
         const std::tuple<const Ms*...> ms(models_.get<Ms>()...);
         const int contribution[] = {contributionIndex(Ms::contribution)...};
-        const double maxGap = std::max({std::get<const Ms*>(ms)->gap()...});
+        const double gap[] = {std::get<const Ms*>(ms)->gap()...};
+        const double maxGap = *std::max_element(gap, gap + nM);
+        const bool perParticle = out.S != nullptr;
 
         // Each particle its own side of each pair of the full list, with
-        // half of the pair's stresslet
+        // half of the pair's stresslet; central forces f n, so the
+        // stresslet (eq. 9d) is (f/|r|) r r, summed as its six entries
         #pragma omp parallel for schedule(static) if(threaded(N))
         for (std::size_t b = 0; b < reductionBlocks(N); ++b)
         {
-            Mat3 S[sizeof...(Ms)];
-            for (Mat3& s : S)
-            {
-                s.setZero();
-            }
+            double W[nM][6] = {};
             const BlockRange rows(b, N);
             for (std::size_t i = rows.begin; i < rows.end; ++i)
             {
+                const Vec3 xi = p.x[i];
+                const double ai = p.a[i];
                 Vec3 Fi = Vec3::Zero();
-                Mat3 Si = Mat3::Zero();
+                double Wi[6] = {0, 0, 0, 0, 0, 0};
                 for (std::uint32_t k = far.offset[i]; k < far.offset[i + 1]; ++k)
                 {
                     const std::uint32_t j = far.j[k];
-                    Vec3 r = p.x[j] - p.x[i];
+                    Vec3 r = p.x[j] - xi;
                     box.minimumImage(r);
-                    const double R = p.a[i] + p.a[j] + maxGap;
-                    if (!(r.squaredNorm() < R*R))
+                    const double d2 = r.squaredNorm();
+                    const double R = ai + p.a[j] + maxGap;
+                    if (!(d2 < R*R))
                     {
                         continue;
                     }
-                    const PairGeometry g = PairGeometry::make(r, p.a[i], p.a[j]);
-                    std::size_t m = 0;
-                    (
-                        [&]
+                    const double d = std::sqrt(d2);
+                    const double invD = 1/d;
+                    const PairGeometry g{r, d, invD*r, ai, p.a[j], d - ai - p.a[j]};
+                    const double rr[6] =
+                    {
+                        r.x()*r.x(), r.x()*r.y(), r.x()*r.z(),
+                        r.y()*r.y(), r.y()*r.z(), r.z()*r.z()
+                    };
+                    double fSum = 0;
+                    forEachIndex<nM>([&](auto m)
+                    {
+                        if (g.h < gap[m])
                         {
-                            const Ms& model = *std::get<const Ms*>(ms);
-                            if (g.h < model.gap())
+                            const double f = std::get<m>(ms)->force(g);
+                            fSum += f;
+                            const double w = 0.5*f*invD;
+                            for (int c = 0; c < 6; ++c)
                             {
-                                const PairForce f = model.eval(g);
-                                Fi += f.F;
-                                Si += 0.5*f.S;
-                                S[m] += 0.5*f.S;
+                                W[m][c] += w*rr[c];
                             }
-                            ++m;
-                        }(),
-                        ...
-                    );
+                        }
+                    });
+                    Fi += (fSum*invD)*r;
+                    if (perParticle)
+                    {
+                        const double w = 0.5*fSum*invD;
+                        for (int c = 0; c < 6; ++c)
+                        {
+                            Wi[c] += w*rr[c];
+                        }
+                    }
                 }
                 if (out.F) (*out.F)[i] += Fi;
-                if (out.S) (*out.S)[i] += Si;
+                if (perParticle) (*out.S)[i] += symmetricMatrix(Wi);
             }
-            for (std::size_t m = 0; m < sizeof...(Ms); ++m)
+            for (std::size_t m = 0; m < nM; ++m)
             {
-                blockS_[b*nC + contribution[m]] += S[m];
+                blockS_[b*nC + contribution[m]] += symmetricMatrix(W[m]);
             }
         }
     }
@@ -432,7 +501,7 @@ ForceSummary ForceField::run
     const LeesEdwardsBox& box,
     const AmbientFlow& flow,
     const PairList& near,
-    ContactState* history,
+    PairList* history,
     const PairList& far,
     double dt,
     Forces forces,
@@ -540,7 +609,7 @@ ForceSummary ForceField::advance
     Output out;
     out.F = &p.F;
     out.T = &p.T;
-    return run(p, box, flow, near, near.history.data(), far, dt, forces, out);
+    return run(p, box, flow, near, &near, far, dt, forces, out);
 }
 
 

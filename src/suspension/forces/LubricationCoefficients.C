@@ -331,11 +331,15 @@ LubricationCoefficients LubricationFactors::at
     static constexpr Entries C::* functions[] =
         {&C::XA, &C::YA, &C::YB, &C::YC, &C::XG, &C::YG, &C::YH};
     const double g[4] = {gap.inv, gap.log, gap.logX, gap.xiLog};
+
+    // The leading terms have logX = xiLog = 0: two of the four basis
+    // scalars are then skipped
+    const int nTerms = (gap.logX != 0 || gap.xiLog != 0) ? 4 : 2;
     C c;
     for (Entries C::* f : functions)
     {
         Entries v{0, 0, 0, 0};
-        for (int k = 0; k < 4; ++k)
+        for (int k = 0; k < nTerms; ++k)
         {
             const Entries& b = basis[k].*f;
             v.ii += g[k]*b.ii;

@@ -19,18 +19,15 @@ VanDerWaalsAttraction::VanDerWaalsAttraction(const Params& p)
 }
 
 
-PairForce VanDerWaalsAttraction::eval(const PairGeometry& g) const
+double VanDerWaalsAttraction::force(const PairGeometry& g) const
 {
-    PairForce f;
-
     // Overlap (h < 0) feels the contact value                      eq. (7a)
     const double abar = harmonicRadius(g.ai, g.aj);
     const double eps = p_.epsilonFraction*abar;
     const double h = std::max(g.h, 0.0);
-    f.F = p_.A*abar/(12*(h*h + eps*eps))*g.n;
-    f.S = symm(outer(g.r, f.F));                                // eq. (9d)
-    return f;
+    return p_.A*abar/(12*(h*h + eps*eps));
 }
+
 
 VanDerWaalsAttraction::Params VanDerWaalsAttraction::read
 (

@@ -180,7 +180,8 @@ namespace
         }
         list.offsetT.clear();
         list.slotT.clear();
-        list.history.clear();
+        list.contactOf.clear();
+        list.contacts.clear();
     }
 
     void checkCount(std::size_t N)

@@ -39,14 +39,14 @@ namespace
             !list.offset.empty()
          && list.nParticles() == p.size()
          && list.offset.back() == list.j.size()
-         && list.history.size() == list.j.size();
+         && list.contactOf.size() == list.j.size();
         if (!empty && !consistent)
         {
             throw std::invalid_argument
             (
                 "NeighbourSearch: the PairList (" + std::to_string(list.nParticles())
               + " particles, " + std::to_string(list.nPairs()) + " pairs, "
-              + std::to_string(list.history.size()) + " histories) does not"
+              + std::to_string(list.contactOf.size()) + " history slots) does not"
                 " belong to these " + std::to_string(p.size()) + " particles"
             );
         }
@@ -60,7 +60,7 @@ namespace
         {
             for (std::size_t k = list.offset[i]; k < list.offset[i + 1]; ++k)
             {
-                const ContactState& s = list.history[k];
+                const ContactState& s = list.history(k);
                 if (s.active())
                 {
                     const std::int64_t a = p.id[i];
@@ -103,8 +103,6 @@ namespace
         {
             return carried;
         }
-        #pragma omp parallel for reduction(+:carried) schedule(static) \
-            if(threaded(p.size()))
         for (std::size_t i = 0; i < list.nParticles(); ++i)
         {
             for (std::size_t k = list.offset[i]; k < list.offset[i + 1]; ++k)
@@ -116,7 +114,7 @@ namespace
                     std::lower_bound(contacts.begin(), contacts.end(), key);
                 if (it != contacts.end() && it->lo == key.lo && it->hi == key.hi)
                 {
-                    list.history[k] = a < b ? it->state : reversed(it->state);
+                    list.setHistory(k, a < b ? it->state : reversed(it->state));
                     ++carried;
                 }
             }
@@ -321,7 +319,7 @@ void NeighbourSearch::rebuild
         far_ = PairList();
     }
     near.transpose();
-    near.history.assign(near.nPairs(), ContactState());
+    near.clearHistory();
 
     const std::size_t carried = restoreContacts(contacts, particles, near);
 

@@ -153,13 +153,6 @@ void writeAscii(const IOdictionary& dict)
     );
 }
 
-
-//- Whether a contact carries history (NeighbourSearch keeps the same ones)
-bool active(const suspension::ContactState& c)
-{
-    return c.xiT != Vec3::Zero() || c.xiR != Vec3::Zero();
-}
-
 } // End anonymous namespace
 
 
@@ -347,14 +340,16 @@ suspension::PairList Foam::suspensionIO::readContacts
         list.offset[i + 1] += list.offset[i];
     }
     list.j.resize(n);
-    list.history.resize(n);
+    list.contactOf.assign(n, suspension::PairList::noContact);
     std::vector<std::uint32_t> next(list.offset.begin(), list.offset.end() - 1);
     forAll(idI, k)
     {
         const std::uint32_t slot = next[pairs[k].first]++;
         list.j[slot] = pairs[k].second;
-        list.history[slot] =
-            suspension::ContactState{toEigen(xiT[k]), toEigen(xiR[k])};
+        list.setHistory
+        (
+            slot, suspension::ContactState{toEigen(xiT[k]), toEigen(xiR[k])}
+        );
     }
     return list;
 }
@@ -454,8 +449,8 @@ void Foam::suspensionIO::write
     {
         for (std::size_t k = pairs.offset[i]; k < pairs.offset[i + 1]; ++k)
         {
-            const suspension::ContactState& c = pairs.history[k];
-            if (active(c))
+            const suspension::ContactState& c = pairs.history(k);
+            if (c.active())
             {
                 idI.append(label(p.id[i]));
                 idJ.append(label(p.id[pairs.j[k]]));
