@@ -20,14 +20,6 @@ ElectrostaticRepulsion::ElectrostaticRepulsion(const Params& p)
 }
 
 
-double ElectrostaticRepulsion::force(const PairGeometry& g) const
-{
-    // Overlap (h < 0) feels the contact value                      eq. (6a)
-    const double abar = harmonicRadius(g.ai, g.aj);
-    return -p_.FER*abar*std::exp(-std::max(g.h, 0.0)/p_.lambdaD);
-}
-
-
 ElectrostaticRepulsion::Params ElectrostaticRepulsion::read
 (
     const ModelInput& input

@@ -423,10 +423,11 @@ void ForceField::farPass
         const double gap[] = {std::get<const Ms*>(ms)->gap()...};
         const double maxGap = *std::max_element(gap, gap + nM);
         const bool perParticle = out.S != nullptr;
+        farForce_.resize(far.nPairs());
 
-        // Each particle its own side of each pair of the full list, with
-        // half of the pair's stresslet; central forces f n, so the
-        // stresslet (eq. 9d) is (f/|r|) r r, summed as its six entries
+        // Pass 1, over the first particles i: the pair's central force
+        // f n, its stresslet (f/|r|) r r (eq. 9d, summed as six entries),
+        // i's part; the slot keeps s = f/|r| for j (0: out of range)
         #pragma omp parallel for schedule(static) if(threaded(N))
         for (std::size_t b = 0; b < reductionBlocks(N); ++b)
         {
@@ -444,40 +445,41 @@ void ForceField::farPass
                     Vec3 r = p.x[j] - xi;
                     box.minimumImage(r);
                     const double d2 = r.squaredNorm();
-                    const double R = ai + p.a[j] + maxGap;
+                    const double aj = p.a[j];
+                    const double R = ai + aj + maxGap;
                     if (!(d2 < R*R))
                     {
+                        farForce_[k] = 0;
                         continue;
                     }
                     const double d = std::sqrt(d2);
                     const double invD = 1/d;
-                    const PairGeometry g{r, d, invD*r, ai, p.a[j], d - ai - p.a[j]};
+                    const PairGeometry g{r, d, invD*r, ai, aj, d - ai - aj};
                     const double rr[6] =
                     {
                         r.x()*r.x(), r.x()*r.y(), r.x()*r.z(),
                         r.y()*r.y(), r.y()*r.z(), r.z()*r.z()
                     };
-                    double fSum = 0;
+                    double s = 0;
                     forEachIndex<nM>([&](auto m)
                     {
                         if (g.h < gap[m])
                         {
-                            const double f = std::get<m>(ms)->force(g);
-                            fSum += f;
-                            const double w = 0.5*f*invD;
+                            const double sm = std::get<m>(ms)->force(g)*invD;
+                            s += sm;
                             for (int c = 0; c < 6; ++c)
                             {
-                                W[m][c] += w*rr[c];
+                                W[m][c] += sm*rr[c];
                             }
                         }
                     });
-                    Fi += (fSum*invD)*r;
+                    Fi += s*r;
+                    farForce_[k] = s;
                     if (perParticle)
                     {
-                        const double w = 0.5*fSum*invD;
                         for (int c = 0; c < 6; ++c)
                         {
-                            Wi[c] += w*rr[c];
+                            Wi[c] += 0.5*s*rr[c];
                         }
                     }
                 }
@@ -488,6 +490,40 @@ void ForceField::farPass
             {
                 blockS_[b*nC + contribution[m]] += symmetricMatrix(W[m]);
             }
+        }
+
+        // Pass 2, over the second particles j in transposed order: -s r,
+        // r recomputed exactly as in pass 1
+        #pragma omp parallel for schedule(static) if(threaded(N))
+        for (std::size_t j = 0; j < N; ++j)
+        {
+            Vec3 Fj = Vec3::Zero();
+            double Wj[6] = {0, 0, 0, 0, 0, 0};
+            for (std::uint32_t t = far.offsetT[j]; t < far.offsetT[j + 1]; ++t)
+            {
+                const double s = farForce_[far.slotT[t]];
+                if (s == 0)
+                {
+                    continue;
+                }
+                Vec3 r = p.x[j] - p.x[far.rowT[t]];
+                box.minimumImage(r);
+                Fj -= s*r;
+                if (perParticle)
+                {
+                    const double rr[6] =
+                    {
+                        r.x()*r.x(), r.x()*r.y(), r.x()*r.z(),
+                        r.y()*r.y(), r.y()*r.z(), r.z()*r.z()
+                    };
+                    for (int c = 0; c < 6; ++c)
+                    {
+                        Wj[c] += 0.5*s*rr[c];
+                    }
+                }
+            }
+            if (out.F) (*out.F)[j] += Fj;
+            if (perParticle) (*out.S)[j] += symmetricMatrix(Wj);
         }
     }
 }

@@ -19,16 +19,6 @@ VanDerWaalsAttraction::VanDerWaalsAttraction(const Params& p)
 }
 
 
-double VanDerWaalsAttraction::force(const PairGeometry& g) const
-{
-    // Overlap (h < 0) feels the contact value                      eq. (7a)
-    const double abar = harmonicRadius(g.ai, g.aj);
-    const double eps = p_.epsilonFraction*abar;
-    const double h = std::max(g.h, 0.0);
-    return p_.A*abar/(12*(h*h + eps*eps));
-}
-
-
 VanDerWaalsAttraction::Params VanDerWaalsAttraction::read
 (
     const ModelInput& input

@@ -152,40 +152,6 @@ namespace
             near.offset[i + 1] = static_cast<std::uint32_t>(near.j.size());
         }
     }
-
-    //- The half list as a full list: the partners of i are those of the
-    //  slots (., i), in slot order, then those of i's own slots
-    void symmetrise(PairList& list)
-    {
-        list.transpose();
-        const std::size_t N = list.nParticles();
-        PairList full;
-        full.offset.assign(N + 1, 0);
-        full.j.reserve(2*list.nPairs());
-        std::vector<std::uint32_t> first(list.nPairs());
-        for (std::size_t i = 0; i < N; ++i)
-        {
-            for (std::uint32_t k = list.offset[i]; k < list.offset[i + 1]; ++k)
-            {
-                first[k] = static_cast<std::uint32_t>(i);
-            }
-        }
-        for (std::size_t i = 0; i < N; ++i)
-        {
-            for (std::uint32_t t = list.offsetT[i]; t < list.offsetT[i + 1]; ++t)
-            {
-                full.j.push_back(first[list.slotT[t]]);
-            }
-            full.j.insert
-            (
-                full.j.end(),
-                list.j.begin() + list.offset[i],
-                list.j.begin() + list.offset[i + 1]
-            );
-            full.offset[i + 1] = static_cast<std::uint32_t>(full.j.size());
-        }
-        list = std::move(full);
-    }
 }
 
 
@@ -311,7 +277,7 @@ void NeighbourSearch::rebuild
     {
         cells_->findPairs(particles, box, searchGap, params_.stencil, far_);
         nearPairs(particles, box, far_, gap, near);
-        symmetrise(far_);
+        far_.transpose(true);
     }
     else
     {
