@@ -25,11 +25,18 @@ Description
 Usage
     suspensionBenchmark [-case table3|table1] [-N 4096] [-steps 20]
         [-phi 0.5] [-attractionCutoff 4] [-brute] [-header] [-seed 1]
+        [-friction 1] [-contactModel frictionalContact|criticalLoadContact]
+        [-criticalLoad 0.1] [-writePacking DIR]
         [-integrator velocityVerlet|implicitEuler|overdamped]
         [-off lubrication|contact|rolling|repulsion|attraction]...
 
     Threads: OMP_NUM_THREADS. The particles start from a random
     non-overlapping packing; a few steps are taken before timing.
+    -friction sets mu_C (0: the frictionless Table 1 FL); -contactModel
+    criticalLoadContact uses the critical-load friction with -criticalLoad
+    F_CL. -writePacking DIR writes the packing before any step as
+    DIR/box.dat (Lx Ly Lz), DIR/radii.dat (one radius per line) and
+    DIR/positions.dat (x y z per line), for other codes to start from.
 \*---------------------------------------------------------------------------*/
 
 #include "dynamics/Simulation.H"
@@ -46,6 +53,7 @@ Usage
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <iostream>
 #include <string>
 
@@ -89,6 +97,10 @@ namespace
         int steps = 20;
         double phi = 0.5;
         double attractionCutoff = 4;
+        double friction = 1;
+        std::string contactModel = "frictionalContact";
+        double criticalLoad = 0.1;
+        std::string packingDir;
         bool brute = false;
         bool header = false;
         std::uint64_t seed = 1;
@@ -123,6 +135,24 @@ namespace
             else if (a == "-phi") o.phi = std::stod(value());
             else if (a == "-attractionCutoff") o.attractionCutoff = std::stod(value());
             else if (a == "-seed") o.seed = std::stoull(value());
+            else if (a == "-friction") o.friction = std::stod(value());
+            else if (a == "-criticalLoad") o.criticalLoad = std::stod(value());
+            else if (a == "-writePacking") o.packingDir = value();
+            else if (a == "-contactModel")
+            {
+                o.contactModel = value();
+                if
+                (
+                    o.contactModel != FrictionalContact::typeName
+                 && o.contactModel != CriticalLoadContact::typeName
+                )
+                {
+                    std::cerr << "suspensionBenchmark: -contactModel takes "
+                        << FrictionalContact::typeName << " or "
+                        << CriticalLoadContact::typeName << "\n";
+                    std::exit(2);
+                }
+            }
             else if (a == "-integrator")
             {
                 o.integratorName = value();
@@ -186,12 +216,19 @@ namespace
         if (o.on("contact"))
         {
             FrictionalContact::Params c =
-                FrictionalContact::fromGroups(4e5, 2.0/7.0, 1e-7, 1.0);
+                FrictionalContact::fromGroups(4e5, 2.0/7.0, 1e-7, o.friction);
             if (t3 && o.on("rolling"))
             {
                 c.kr = 0.1*c.kn;
             }
-            m.set(FrictionalContact(c));
+            if (o.contactModel == CriticalLoadContact::typeName)
+            {
+                m.set(CriticalLoadContact({c, o.criticalLoad}));
+            }
+            else
+            {
+                m.set(FrictionalContact(c));
+            }
         }
         if (t3)
         {
@@ -208,6 +245,30 @@ namespace
             }
         }
         return m;
+    }
+
+    //- The packing as plain text files (see Usage)
+    void writePacking(const std::string& dir, const RandomPacking::Result& packed)
+    {
+        std::ofstream box(dir + "/box.dat");
+        std::ofstream radii(dir + "/radii.dat");
+        std::ofstream positions(dir + "/positions.dat");
+        box.precision(17);
+        radii.precision(17);
+        positions.precision(17);
+        const Vec3& L = packed.box.L();
+        box << L.x() << ' ' << L.y() << ' ' << L.z() << '\n';
+        const Particles& p = packed.particles;
+        for (std::size_t i = 0; i < p.size(); ++i)
+        {
+            radii << p.a[i] << '\n';
+            positions << p.x[i].x() << ' ' << p.x[i].y() << ' ' << p.x[i].z() << '\n';
+        }
+        if (!box || !radii || !positions)
+        {
+            std::cerr << "suspensionBenchmark: cannot write the packing to " << dir << "\n";
+            std::exit(1);
+        }
     }
 
     std::string joined(const std::vector<std::string>& names)
@@ -251,6 +312,10 @@ int main(int argc, char** argv)
     const auto tp = Clock::now();
     RandomPacking::Result packed = RandomPacking(pp).pack(radii, rho);
     const double packSeconds = seconds(tp, Clock::now());
+    if (!o.packingDir.empty())
+    {
+        writePacking(o.packingDir, packed);
+    }
 
     const ShearFlow flow(1.0);
     LeesEdwardsBox box(packed.box.L(), 1.0);
