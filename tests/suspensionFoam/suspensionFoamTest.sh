@@ -20,6 +20,8 @@
 #               tiny/ written in SI units (units dimensional) gives the same
 #               reduced parameters and the same first rheology.dat row
 #   failure     a blown-up run writes its last good state and exits non-zero
+#   criticalLoadRun
+#               contact type criticalLoadContact: read, reported and run
 #   bad*, dimensionalConflict
 #               one bad input each: a FatalIOError naming the file and the
 #               entry, before any time step
@@ -398,6 +400,39 @@ dimensionalConflict)
     foamDictionary -entry contact/stiffness -add 4e5 "$work/c/$properties" \
         > /dev/null 2>&1
     expectInputError c suspensionProperties stiffness "units dimensional"
+    ;;
+
+badContactType)
+    # Models sharing a dictionary are chosen by `type`
+    newCase c
+    foamDictionary -entry contact/type -add sticky "$work/c/$properties" \
+        > /dev/null 2>&1
+    expectInputError c suspensionProperties type sticky frictionalContact \
+        criticalLoadContact
+    ;;
+
+badCriticalLoad)
+    newCase c
+    foamDictionary -entry contact/type -add criticalLoadContact \
+        "$work/c/$properties" > /dev/null 2>&1
+    foamDictionary -entry contact/criticalLoad -add -1 \
+        "$work/c/$properties" > /dev/null 2>&1
+    expectInputError c suspensionProperties criticalLoad "[0, inf)"
+    ;;
+
+criticalLoadRun)
+    # The critical-load model from the case: read, reported, run
+    newCase c
+    foamDictionary -entry contact/type -add criticalLoadContact \
+        "$work/c/$properties" > /dev/null 2>&1
+    foamDictionary -entry contact/criticalLoad -add 0.1 \
+        "$work/c/$properties" > /dev/null 2>&1
+    setEntry c system/controlDict endTime 0.001
+    (cd "$work/c" && wavyShearFoam > log.wavyShearFoam 2>&1) \
+        || fail "wavyShearFoam with criticalLoadContact"
+    grep -q "^    criticalLoadContact .*F_CL = 0.1" "$work/c/log.wavyShearFoam" \
+        || fail "the start-up report does not name the critical load"
+    grep -q "^strain " "$work/c/log.wavyShearFoam" || fail "no step taken"
     ;;
 
 badDeltaT)
