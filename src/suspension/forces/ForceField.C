@@ -215,6 +215,14 @@ void ForceField::nearPass
         const bool perParticle = out.S != nullptr;
         const bool readHistory = anyHistory<Ms...> && !near.contactOf.empty();
         const bool advanceHistory = anyHistory<Ms...> && history;
+        if (advanceHistory && near.contactOf.size() != near.nPairs())
+        {
+            throw std::logic_error
+            (
+                "ForceField: the near list carries no contact history"
+                " (PairList::clearHistory)"
+            );
+        }
         if (advanceHistory)
         {
             blockContacts_.resize(reductionBlocks(N));
@@ -254,7 +262,7 @@ void ForceField::nearPass
                     const double R = p.a[i] + p.a[j] + maxGap;
                     if (!(r.squaredNorm() < R*R))
                     {
-                        if (advanceHistory)
+                        if (advanceHistory && near.contactOf[k] != PairList::noContact)
                         {
                             // eq. (5): a pair out of contact has no stretch
                             history->contactOf[k] = PairList::noContact;
@@ -324,8 +332,12 @@ void ForceField::nearPass
                     }
                     if (advanceHistory)
                     {
-                        // The state after the step joins the next pool
-                        history->contactOf[k] = PairList::noContact;
+                        // The state after the step joins the next pool;
+                        // a slot that leaves contact has none
+                        if (near.contactOf[k] != PairList::noContact)
+                        {
+                            history->contactOf[k] = PairList::noContact;
+                        }
                         if (next.active())
                         {
                             blockContacts_[b].push_back({k, next});
