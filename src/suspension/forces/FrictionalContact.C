@@ -42,32 +42,28 @@ FrictionalContact::Params FrictionalContact::fromGroups
 FrictionalContact::Params FrictionalContact::read(const ModelInput& input)
 {
     using Range = ModelInput::Range;
-    Params p = fromGroups
+    const double kHat = input.scalar
     (
-        input.scalar
-        (
-            "stiffness", Range::positive(),
-            "k_hat = kn/(eta0 a0 gammaDot) (eq. 12)"
-        ),
-        input.scalar("stiffnessRatio", Range::positive(), "kt/kn (eq. 13)"),
-        input.scalar
-        (
-            "damping", Range::nonNegative(), "gamma_n gammaDot/kn (eq. 13)"
-        ),
-        input.scalar("friction", Range::nonNegative(), "mu_C (eq. 5)")
+        "stiffness", Range::positive(), "k_hat = kn/(eta0 a0 gammaDot) (eq. 12)"
     );
+    const double ktOverKn =
+        input.scalar("stiffnessRatio", Range::positive(), "kt/kn (eq. 13)");
+    const double gammaNOverKn = input.scalar
+    (
+        "damping", Range::nonNegative(), "gamma_n gammaDot/kn (eq. 13)"
+    );
+    const double muC = input.scalar("friction", Range::nonNegative(), "mu_C (eq. 5)");
+    Params p = fromGroups(kHat, ktOverKn, gammaNOverKn, muC);
     p.kr = p.kn*input.scalarOr
     (
         "rollingStiffnessRatio", 0, Range::nonNegative(),
         "kr/kn, 0: no rolling resistance (appendix B)"
     );
-    if (input.found("rollingFriction"))
-    {
-        p.muR = input.scalar
-        (
-            "rollingFriction", Range::nonNegative(), "mu_r (appendix B)"
-        );
-    }
+    p.muR = input.scalarOr
+    (
+        "rollingFriction", p.muC, Range::nonNegative(),
+        "mu_r (appendix B; default mu_C)"
+    );
     return p;
 }
 
