@@ -51,17 +51,10 @@ void ElectrostaticRepulsion::addTimeStepLimits
     TimeStepLimitBuilder& limits
 ) const
 {
-    limits.addOverPairs("repulsion", [&](double ai, double aj)
-    {
-        return limits.centralForceLimit
-        (
-            [&](double h)
-            {
-                return eval(PairGeometry::make(Vec3(ai + aj + h, 0, 0), ai, aj)).F.x();
-            },
-            ai, aj, gap()
-        );
-    });
+    addCentralForceLimit
+    (
+        limits, "repulsion", *this, [&](double, double) { return gap(); }
+    );
 }
 
 } // namespace suspension

@@ -52,17 +52,11 @@ void VanDerWaalsAttraction::addTimeStepLimits
     TimeStepLimitBuilder& limits
 ) const
 {
-    limits.addOverPairs("attraction", [&](double ai, double aj)
-    {
-        return limits.centralForceLimit
-        (
-            [&](double h)
-            {
-                return eval(PairGeometry::make(Vec3(ai + aj + h, 0, 0), ai, aj)).F.x();
-            },
-            ai, aj, 0.1*std::min(ai, aj)
-        );
-    });
+    addCentralForceLimit
+    (
+        limits, "attraction", *this,
+        [](double ai, double aj) { return 0.1*std::min(ai, aj); }
+    );
 }
 
 } // namespace suspension
