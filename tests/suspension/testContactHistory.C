@@ -40,7 +40,7 @@ namespace
         {
             for (std::size_t k = list.offset[i]; k < list.offset[i + 1]; ++k)
             {
-                const ContactState& s = list.history[k];
+                const ContactState& s = list.history(k);
                 if (!s.active())
                 {
                     continue;
@@ -183,7 +183,7 @@ TEST(ContactHistory, CarriedThroughEveryRebuildOfAShearedRun)
         {
             for (std::size_t k = near.offset[i]; k < near.offset[i + 1]; ++k)
             {
-                if (near.history[k].active())
+                if (near.history(k).active())
                 {
                     Vec3 r = p.x[near.j[k]] - p.x[i];
                     const int image = box.minimumImage(r);

@@ -187,6 +187,25 @@ void ForceField::dispatch(unsigned mask, const Pass& pass)
 
 // * * * * * * * * * * * * * * * * Near pass * * * * * * * * * * * * * * * * //
 
+void ForceField::countContact
+(
+    BlockStats& stats,
+    const PairGeometry& g,
+    std::int64_t idI,
+    std::int64_t idJ
+)
+{
+    ++stats.nContacts;
+    const double overlap = -g.h/std::min(g.ai, g.aj);
+    if (overlap > stats.maxOverlap)
+    {
+        stats.maxOverlap = overlap;
+        stats.pair[0] = idI;
+        stats.pair[1] = idJ;
+    }
+}
+
+
 template<class... Ms>
 void ForceField::nearPass
 (
@@ -204,7 +223,37 @@ void ForceField::nearPass
         (0 + ... + int(Ms::hasHistory)) <= 1,
         "a pair carries one ContactState: at most one model with history"
     );
-    if constexpr (sizeof...(Ms) > 0)
+    if constexpr (sizeof...(Ms) == 0)
+    {
+        // No model here: the contacts are still counted (Simulation's
+        // check of the overlap needs them)
+        const std::size_t N = p.size();
+        #pragma omp parallel for schedule(static) if(threaded(N))
+        for (std::size_t b = 0; b < reductionBlocks(N); ++b)
+        {
+            BlockStats& stats = blockStats_[b];
+            const BlockRange rows(b, N);
+            for (std::size_t i = rows.begin; i < rows.end; ++i)
+            {
+                for (std::uint32_t k = near.offset[i]; k < near.offset[i + 1]; ++k)
+                {
+                    const std::uint32_t j = near.j[k];
+                    Vec3 r = p.x[j] - p.x[i];
+                    box.minimumImage(r);
+                    const double R = p.a[i] + p.a[j];
+                    if (r.squaredNorm() < R*R)
+                    {
+                        countContact
+                        (
+                            stats, PairGeometry::make(r, p.a[i], p.a[j]),
+                            p.id[i], p.id[j]
+                        );
+                    }
+                }
+            }
+        }
+    }
+    else
     {
         const std::size_t N = p.size();
         const std::size_t nC = contributionNames().size();
@@ -274,14 +323,7 @@ void ForceField::nearPass
                     const PairGeometry g = PairGeometry::make(r, p.a[i], p.a[j]);
                     if (g.h < 0)
                     {
-                        ++stats.nContacts;
-                        const double overlap = -g.h/std::min(g.ai, g.aj);
-                        if (overlap > stats.maxOverlap)
-                        {
-                            stats.maxOverlap = overlap;
-                            stats.pair[0] = p.id[i];
-                            stats.pair[1] = p.id[j];
-                        }
+                        countContact(stats, g, p.id[i], p.id[j]);
                     }
 
                     PairForce total;
