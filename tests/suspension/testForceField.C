@@ -411,7 +411,7 @@ namespace
         for (std::size_t i = 0; i < N; ++i)
         {
             U[i] = fx.flow.sample(p.x[i]);
-            const StokesDrag::Result d = models.drag.eval(p.a[i], p.u[i], p.omega[i], U[i]);
+            const StokesDrag::Result d = models.drag().eval(p.a[i], p.u[i], p.omega[i], U[i]);
             f.F[i] += d.F;
             f.T[i] += d.T;
             f.S[i] += d.S;

@@ -261,7 +261,7 @@ namespace
 TEST(Implicit, MatrixFreeProductEqualsDenseAssembly)
 {
     RandomBox s(3);
-    HydrodynamicResistance R(s.models.drag, s.models.get<Lubrication>());
+    HydrodynamicResistance R(s.models.drag(), s.models.get<Lubrication>());
     R.assemble(s.p, s.box, s.ambient, s.pairs);
     ASSERT_GT(R.nPairs(), 20u);
 
@@ -314,7 +314,7 @@ TEST(Implicit, ResistanceGivesTheForcesAndStressOfTheExplicitPairLoop)
     const ForceSummary explicitSummary =
         forces.advance(q, s.box, s.flow, pairs, PairList(), 0);
 
-    HydrodynamicResistance R(s.models.drag, s.models.get<Lubrication>());
+    HydrodynamicResistance R(s.models.drag(), s.models.get<Lubrication>());
     R.assemble(s.p, s.box, s.ambient, s.pairs);
     R.setInertia(s.p, 0);
     Eigen::VectorXd RV;

@@ -178,26 +178,27 @@ int main()
     std::cout
         << "# Force models\n\n"
         << "Made by `suspensionModels > docs/models.md` from the registry "
-           "`PairModels` of `src/suspension/forces/ForceModels.H`; the "
+           "`ParticleModels` and `PairModels` of "
+           "`src/suspension/forces/ForceModels.H`; the "
            "entries are those each model's `read()` asks for "
-           "(reduced units a0 = eta0 = gammaDot = 1). Stokes drag with Faxen "
-           "terms is always on. A model's dictionary in "
+           "(reduced units a0 = eta0 = gammaDot = 1). A model's dictionary in "
            "`constant/suspensionProperties` needs `active true;`; models "
            "sharing a dictionary are chosen by its `type` entry.\n\n"
+        << "Pair models (`PairModels`):\n\n"
         << "| model (`type`) | dictionary | stress column | velocities | "
            "history | hydrodynamic | central |\n"
         << "|---|---|---|---|---|---|---|\n";
 
     std::vector<Entry> entries;
-    std::vector<std::string> order;
-    forEachPairModelType([&](auto tag)
+    auto readEntries = [&](auto tag)
     {
         using M = typename decltype(tag)::type;
-        std::cout
-            << "| " << M::typeName << " | `" << M::dictName << "` | etaR_"
-            << M::contribution << " | " << yes(M::usesVelocities) << " | "
-            << yes(M::hasHistory) << " | " << yes(M::hydrodynamic) << " | "
-            << yes(M::central) << " |\n";
+        if constexpr (M::dictName[0] == '\0')
+        {
+            return;
+        }
+        else
+        {
         std::vector<Entry> own;
         const Recorder input(M::dictName, own);
         M::read(input);
@@ -214,6 +215,33 @@ int main()
                 entries.push_back(e);
             }
         }
+        }
+    };
+    forEachPairModelType([&](auto tag)
+    {
+        using M = typename decltype(tag)::type;
+        std::cout
+            << "| " << M::typeName << " | `" << M::dictName << "` | etaR_"
+            << M::contribution << " | " << yes(M::usesVelocities) << " | "
+            << yes(M::hasHistory) << " | " << yes(M::hydrodynamic) << " | "
+            << yes(M::central) << " |\n";
+        readEntries(tag);
+    });
+
+    std::cout
+        << "\nPer-particle models (`ParticleModels`):\n\n"
+        << "| model | dictionary | stress column | hydrodynamic |\n"
+        << "|---|---|---|---|\n";
+    forEachParticleModelType([&](auto tag)
+    {
+        using M = typename decltype(tag)::type;
+        const std::string dict = M::dictName;
+        std::cout
+            << "| " << M::typeName << " | "
+            << (dict.empty() ? std::string("(always on)") : "`" + dict + "`")
+            << " | etaR_" << M::contribution << " | " << yes(M::hydrodynamic)
+            << " |\n";
+        readEntries(tag);
     });
 
     std::cout

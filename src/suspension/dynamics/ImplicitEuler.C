@@ -11,7 +11,7 @@ ImplicitEuler::ImplicitEuler
 )
 :
     inertia_(inertia),
-    resistance_(models.drag, models.get<Lubrication>()),
+    resistance_(models.drag(), models.get<Lubrication>()),
     solver_(solver)
 {}
 

@@ -257,7 +257,7 @@ Rheology Simulation::rheology() const
 {
     return Rheology
     (
-        summary_, box_.volume(), forces_.models().drag.params().eta,
+        summary_, box_.volume(), forces_.models().drag().params().eta,
         flow_.shearRate()
     );
 }

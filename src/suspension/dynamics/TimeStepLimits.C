@@ -32,7 +32,7 @@ namespace
         double h
     )
     {
-        const double eta = models.drag.params().eta;
+        const double eta = models.drag().params().eta;
         Lubrication::PairMatrix R = Lubrication::PairMatrix::Zero();
         const PairGeometry g = PairGeometry::make(Vec3(ai + aj + h, 0, 0), ai, aj);
         models.forEach([&](const auto& m)
@@ -317,30 +317,15 @@ TimeStepLimits::TimeStepLimits
 
     const bool explicitHydrodynamics = integrator == Integrator::velocityVerlet;
     const bool inertia = integrator != Integrator::overdamped;
-    const double eta = models.drag.params().eta;
-    const double mMin = sphereMass(aMin, rho);
-    if (explicitHydrodynamics)
-    {
-        limits_.push_back
-        ({
-            "stokesDrag",
-            2*std::min
-            (
-                StokesDrag::relaxationTime(mMin, aMin, eta),
-                StokesDrag::rotationalRelaxationTime(0.4*mMin*aMin*aMin, aMin, eta)
-            )
-        });
-    }
 
     Builder builder
     (
         models, {{{aMin, aMin}, {aMin, aMax}, {aMax, aMax}}}, rho,
         explicitHydrodynamics, inertia, maxVelocityGradient, limits_
     );
-    models.forEach([&](const auto& m)
-    {
-        m.addTimeStepLimits(builder);
-    });
+    auto addLimits = [&](const auto& m) { m.addTimeStepLimits(builder); };
+    models.forEachParticleModel(addLimits);
+    models.forEach(addLimits);
 
     for (const TimeStepLimit& l : limits_)
     {

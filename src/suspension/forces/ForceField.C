@@ -613,14 +613,20 @@ ForceSummary ForceField::run
     if (out.T) out.T->resize(N);
     if (out.S) out.S->resize(N);
 
-    // Once per particle: the flow and the drag, torque and stresslet (A.1, 9a)
+    // Once per particle: the flow, then the per-particle models (the drag,
+    // torque and stresslet, A.1, 9a)
     {
         ScopedTime timer(times_.flowSampling);
-        const StokesDrag& drag = models_.drag;
+        int particleContribution[ParticleModels::size];
+        forEachParticleModelType([&](auto tag)
+        {
+            using M = typename decltype(tag)::type;
+            particleContribution[detail::IndexOf<M, ParticleModels>::value] =
+                contributionIndex(M::contribution);
+        });
         #pragma omp parallel for schedule(static) if(threaded(N))
         for (std::size_t b = 0; b < nB; ++b)
         {
-            Mat3 S = Mat3::Zero();
             const BlockRange rows(b, N);
             for (std::size_t i = rows.begin; i < rows.end; ++i)
             {
@@ -628,15 +634,27 @@ ForceSummary ForceField::run
                 uRel_[i] = p.u[i] - f.U;
                 wRel_[i] = p.omega[i] - f.Omega();
                 E_[i] = f.E();
-                const StokesDrag::Result d = hydrodynamic
-                  ? drag.eval(p.a[i], p.u[i], p.omega[i], f)
-                  : StokesDrag::Result{Vec3::Zero(), Vec3::Zero(), Mat3::Zero()};
-                if (out.F) (*out.F)[i] = d.F;
-                if (out.T) (*out.T)[i] = d.T;
-                if (out.S) (*out.S)[i] = d.S;
-                S += d.S;
+                Vec3 F = Vec3::Zero();
+                Vec3 T = Vec3::Zero();
+                Mat3 Si = Mat3::Zero();
+                models_.forEachParticleModel([&](const auto& model)
+                {
+                    using M = std::decay_t<decltype(model)>;
+                    if (hydrodynamic || !M::hydrodynamic)
+                    {
+                        const auto d = model.eval(p.a[i], p.u[i], p.omega[i], f);
+                        F += d.F;
+                        T += d.T;
+                        Si += d.S;
+                        const int c =
+                            particleContribution[detail::IndexOf<M, ParticleModels>::value];
+                        blockS_[b*nC + c] += d.S;
+                    }
+                });
+                if (out.F) (*out.F)[i] = F;
+                if (out.T) (*out.T)[i] = T;
+                if (out.S) (*out.S)[i] = Si;
             }
-            blockS_[b*nC] = S;
         }
     }
 

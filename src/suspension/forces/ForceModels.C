@@ -9,15 +9,17 @@ const std::vector<std::string>& contributionNames()
 {
     static const std::vector<std::string> names = []
     {
-        std::vector<std::string> n{"stokes"};
-        forEachPairModelType([&](auto tag)
+        std::vector<std::string> n;
+        auto add = [&](auto tag)
         {
             const std::string c = decltype(tag)::type::contribution;
             if (std::find(n.begin(), n.end(), c) == n.end())
             {
                 n.push_back(c);
             }
-        });
+        };
+        forEachParticleModelType(add);
+        forEachPairModelType(add);
         return n;
     }();
     return names;
@@ -59,12 +61,14 @@ double ForceModels::interactionGap() const
 
 std::string ForceModels::summary() const
 {
-    std::string s = "stokesDrag";
-    forEach([&](const auto& m)
+    std::string s;
+    auto add = [&](const auto& m)
     {
-        s += " ";
+        s += s.empty() ? "" : " ";
         s += std::decay_t<decltype(m)>::typeName;
-    });
+    };
+    forEachParticleModel(add);
+    forEach(add);
     return s;
 }
 

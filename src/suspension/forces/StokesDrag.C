@@ -1,6 +1,9 @@
 #include "forces/StokesDrag.H"
 #include "forces/ParamCheck.H"
 
+#include <algorithm>
+#include <sstream>
+
 namespace suspension
 {
 
@@ -46,6 +49,33 @@ double StokesDrag::relaxationTime(double m, double a, double eta)
 double StokesDrag::rotationalRelaxationTime(double I, double a, double eta)
 {
     return I/(8*pi*eta*a*a*a);
+}
+
+std::string StokesDrag::describe() const
+{
+    std::ostringstream os;
+    os  << "eta0 = " << p_.eta;
+    return os.str();
+}
+
+
+void StokesDrag::addTimeStepLimits(TimeStepLimitBuilder& limits) const
+{
+    if (!limits.explicitHydrodynamics())
+    {
+        return;
+    }
+    const double rho = limits.rho();
+    limits.addOverPairs("stokesDrag", [&](double ai, double aj)
+    {
+        const double a = std::min(ai, aj);
+        const double m = 4.0/3.0*pi*a*a*a*rho;
+        return 2*std::min
+        (
+            relaxationTime(m, a, p_.eta),
+            rotationalRelaxationTime(0.4*m*a*a, a, p_.eta)
+        );
+    });
 }
 
 } // namespace suspension

@@ -180,46 +180,59 @@ void Foam::forceModelsReader::checkUnknownEntries() const
 
 Foam::forceModelsReader::forceModelsReader(const dictionary& dict)
 {
-    suspension::forEachPairModelType([&](auto tag)
+    auto readModel = [&](auto tag)
     {
         using M = typename decltype(tag)::type;
+        if constexpr (M::dictName[0] != '\0')
+        {
+            read<M>(dict);
+        }
+    };
+    suspension::forEachParticleModelType(readModel);
+    suspension::forEachPairModelType(readModel);
+    checkUnknownEntries();
+}
 
-        const dictionary* d = findPath(dict, M::dictName);
-        if (!d || !d->get<bool>("active"))
+
+template<class M>
+void Foam::forceModelsReader::read(const dictionary& dict)
+{
+    const dictionary* d = findPath(dict, M::dictName);
+    if (!d || !d->get<bool>("active"))
+    {
+        return;
+    }
+
+    // Alternatives read from the same dictionary: selected by `type`
+    wordList types;
+    auto alternative = [&](auto other)
+    {
+        using O = typename decltype(other)::type;
+        if (std::strcmp(O::dictName, M::dictName) == 0)
+        {
+            types.append(O::typeName);
+        }
+    };
+    suspension::forEachParticleModelType(alternative);
+    suspension::forEachPairModelType(alternative);
+    if (types.size() > 1)
+    {
+        const word type = d->getOrDefault<word>("type", types.first());
+        if (!types.found(type))
+        {
+            FatalIOErrorInFunction(*d)
+                << "Entry 'type' = " << type << " in dictionary "
+                << d->name() << " is not one of " << types << nl
+                << exit(FatalIOError);
+        }
+        if (type != M::typeName)
         {
             return;
         }
+    }
 
-        // Alternatives read from the same dictionary: selected by `type`
-        wordList types;
-        suspension::forEachPairModelType([&](auto other)
-        {
-            using O = typename decltype(other)::type;
-            if (std::strcmp(O::dictName, M::dictName) == 0)
-            {
-                types.append(O::typeName);
-            }
-        });
-        if (types.size() > 1)
-        {
-            const word type = d->getOrDefault<word>("type", types.first());
-            if (!types.found(type))
-            {
-                FatalIOErrorInFunction(*d)
-                    << "Entry 'type' = " << type << " in dictionary "
-                    << d->name() << " is not one of " << types << nl
-                    << exit(FatalIOError);
-            }
-            if (type != M::typeName)
-            {
-                return;
-            }
-        }
-
-        const input& in = inputOf(*d);
-        models_.set(engineCall(*d, [&]{ return M(M::read(in)); }));
-    });
-    checkUnknownEntries();
+    const input& in = inputOf(*d);
+    models_.set(engineCall(*d, [&]{ return M(M::read(in)); }));
 }
 
 

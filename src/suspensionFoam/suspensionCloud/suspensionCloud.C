@@ -184,7 +184,7 @@ void Foam::suspensionCloud::writeState(suspension::Simulation& sim) const
     writeParticleFields(mesh_, sim.particles(), S, cells);
     profiles_.write
     (
-        sim.particles(), S, *flow_, sim.models().drag.params().eta
+        sim.particles(), S, *flow_, sim.models().drag().params().eta
     );
     flow_->writeFields(mesh_);
 }

@@ -180,7 +180,7 @@ void Foam::suspensionProperties::report(Ostream& os) const
         << ", radii [" << population_.radii().front() << ", "
         << population_.radii().back() << "], box " << population_.box() << nl
         << "    models       " << m.summary().c_str() << nl
-        << "    Stokes drag  eta0 = " << m.drag.params().eta
+        << "    Stokes drag  eta0 = " << m.drag().params().eta
         << ", rho = St = " << s.rho << nl;
 
     m.forEach([&](const auto& model)
