@@ -16,6 +16,8 @@ here="$(cd "$(dirname "$0")" && pwd)"
 top="$here/../.."
 cd "$top"
 . etc/bashrc
+# Each binary finds its own engine library by its RUNPATH
+unset LD_LIBRARY_PATH
 repeats="${1:-5}"
 new="$WSF_PLATFORM/bin/suspensionBenchmark"
 ref="${2:-}"
