@@ -2,6 +2,7 @@
 // head-on collision, the Coulomb cap, the stretch on the tangent plane, the
 // rolling cap, pair symmetry, the virial and parameter checks
 #include "forces/CriticalLoadContact.H"
+#include "contactTestTools.H"
 
 #include <gtest/gtest.h>
 
@@ -13,59 +14,12 @@ using namespace suspension;
 
 namespace
 {
-    FrictionalContact::Params params
-    (
-        double kn,
-        double kt,
-        double gammaN,
-        double muC
-    )
-    {
-        FrictionalContact::Params p;
-        p.kn = kn;
-        p.kt = kt;
-        p.gammaN = gammaN;
-        p.muC = muC;
-        return p;
-    }
+    using test::advanceContact;
+    using test::kinematics;
 
-    //- Kinematics of a pair from absolute velocities and spins
-    PairKinematics kinematics
-    (
-        const Vec3& ui,
-        const Vec3& uj,
-        const Vec3& omegai,
-        const Vec3& omegaj
-    )
+    FrictionalContact::Params params(double kn, double kt, double gammaN, double muC)
     {
-        PairKinematics k;
-        k.ui = ui;
-        k.uj = uj;
-        k.wi = omegai;
-        k.wj = omegaj;
-        k.du = uj - ui;
-        k.omegai = omegai;
-        k.omegaj = omegaj;
-        k.Ei = Mat3::Zero();
-        k.Ej = Mat3::Zero();
-        return k;
-    }
-
-    //- One step of a contact kernel: the force, and the state advanced
-    template<class Contact>
-    PairForce advanceContact
-    (
-        const Contact& contact,
-        const PairGeometry& g,
-        const PairKinematics& kin,
-        ContactState& state,
-        double dt
-    )
-    {
-        ContactState next;
-        const PairForce f = contact.eval(g, kin, state, next, dt);
-        state = next;
-        return f;
+        return test::springs(kn, kt, gammaN, muC);
     }
 
     //- Tangential part of v

@@ -6,6 +6,7 @@
 // checks, and the registry refusing both contact models at once
 #include "flow/ShearFlow.H"
 #include "forces/ForceField.H"
+#include "contactTestTools.H"
 #include "search/NeighbourSearch.H"
 
 #include <gtest/gtest.h>
@@ -25,14 +26,12 @@ namespace
     const double muC = 0.5;
     const Vec3 n = Vec3(0.48, 0.6, -0.64);          // unit, from i to j
 
+    using test::advanceContact;
+    using test::kinematics;
+
     FrictionalContact::Params springs(double gammaN)
     {
-        FrictionalContact::Params p;
-        p.kn = kn;
-        p.kt = kt;
-        p.gammaN = gammaN;
-        p.muC = muC;
-        return p;
+        return test::springs(kn, kt, gammaN, muC);
     }
 
     CriticalLoadContact criticalLoad(double FCL, double gammaN = 0)
@@ -46,44 +45,11 @@ namespace
         return PairGeometry::make((ai + aj + h)*n, ai, aj);
     }
 
-    //- Kinematics of a pair from absolute velocities and spins (no flow)
-    PairKinematics kinematics
-    (
-        const Vec3& ui,
-        const Vec3& uj,
-        const Vec3& omegai,
-        const Vec3& omegaj
-    )
-    {
-        return PairKinematics
-        {
-            ui, uj, omegai, omegaj, uj - ui, omegai, omegaj,
-            Mat3::Zero(), Mat3::Zero()
-        };
-    }
-
     //- j slides past i at tangential speed 0.3 and separates at 0.02
     //  (the dashpot then lowers |F_n| below the spring force)
     const Vec3 slide = 0.3*Vec3(0.8, -0.64, 0).normalized().cross(n).normalized();
     const PairKinematics sliding =
         kinematics(Vec3::Zero(), slide + 0.02*n, Vec3::Zero(), Vec3::Zero());
-
-    //- One step of a contact kernel: the force, and the state advanced
-    template<class Contact>
-    PairForce advanceContact
-    (
-        const Contact& contact,
-        const PairGeometry& g,
-        const PairKinematics& kin,
-        ContactState& state,
-        double dt
-    )
-    {
-        ContactState next;
-        const PairForce f = contact.eval(g, kin, state, next, dt);
-        state = next;
-        return f;
-    }
 
     Vec3 tangential(const Vec3& v)
     {
