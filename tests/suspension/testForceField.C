@@ -830,7 +830,8 @@ TEST(ForceField, FixtureCoversTheRangesOfTheModels)
 TEST(ForceField, EveryCombinationEqualsBruteForceOverTheKernels)
 {
     // The loop (near pass: half list, slot buffers, transposed second pass;
-    // far pass: full list) against a double loop over all pairs that calls
+    // far pass: half list, one scalar per slot, transposed second pass)
+    // against a double loop over all pairs that calls
     // the kernels itself: forces, torques, per-particle stresslets, the
     // stresslet sums per contribution (eq. 8) and the contact statistics
     const Fixture fx = makeFixture();

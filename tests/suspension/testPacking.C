@@ -1,10 +1,12 @@
 // Initial configurations: the particle population (counts, volumes, box)
 // and random packings free of overlaps (paper section 3, tables 1 and 3)
+#include "core/Parallel.H"
 #include "packing/RandomPacking.H"
 #include "packing/SizeDistribution.H"
 #include "search/CellList.H"
 
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
@@ -353,11 +355,17 @@ TEST(Packing, ReproducibleWithSeed)
     }
     EXPECT_GT(moved, radii.size()/2);
 
-    // above searchParallelMin the threads share the work (per-thread force
-    // buffers, sums in thread order): still reproducible
-    const std::vector<double> many = SizeDistribution::monodisperse(1).radii(4096);
+    // Threads share the work (core/Parallel.H): the packing is bitwise the
+    // same on one and on two threads
+    const std::vector<double> many = SizeDistribution::monodisperse(1).radii(1000);
+    const std::size_t threshold = setParallelMinParticles(0);
+    const int threads = omp_get_max_threads();
+    omp_set_num_threads(1);
     const RandomPacking::Result d = RandomPacking(params(0.3, 3)).pack(many, 1);
+    omp_set_num_threads(2);
     const RandomPacking::Result e = RandomPacking(params(0.3, 3)).pack(many, 1);
+    omp_set_num_threads(threads);
+    setParallelMinParticles(threshold);
     EXPECT_EQ(d.particles.x, e.particles.x);
 }
 
