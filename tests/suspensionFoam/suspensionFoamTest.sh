@@ -20,8 +20,9 @@
 #               tiny/ written in SI units (units dimensional) gives the same
 #               reduced parameters and the same first rheology.dat row
 #   failure     a blown-up run writes its last good state and exits non-zero
-#   criticalLoadRun
-#               contact type criticalLoadContact: read, reported and run
+#   criticalLoadRun, criticalLoadDimensional
+#               contact type criticalLoadContact: read (in reduced and in SI
+#               units), reported and run
 #   bad*, dimensionalConflict
 #               one bad input each: a FatalIOError naming the file and the
 #               entry, before any time step
@@ -433,6 +434,25 @@ criticalLoadRun)
     grep -q "^    criticalLoadContact .*F_CL = 0.1" "$work/c/log.wavyShearFoam" \
         || fail "the start-up report does not name the critical load"
     grep -q "^strain " "$work/c/log.wavyShearFoam" || fail "no step taken"
+    ;;
+
+criticalLoadDimensional)
+    # F_CL in newtons with units dimensional: 1e-13 N is 0.1 in the force
+    # scale eta0 a0^2 gammaDot = 1e-12 N of toDimensional
+    newCase c
+    toDimensional c
+    foamDictionary -entry contact/type -add criticalLoadContact \
+        "$work/c/$properties" > /dev/null 2>&1
+    foamDictionary -entry dimensional/criticalLoad -add 1e-13 \
+        "$work/c/$properties" > /dev/null 2>&1
+    mesh c
+    setEntry c system/controlDict endTime 0.001
+    (cd "$work/c" && wavyShearFoam > log.wavyShearFoam 2>&1) \
+        || fail "wavyShearFoam with criticalLoadContact in SI units"
+    grep -qF "contact/criticalLoad = 0.1  (F_CL/(eta0 a0^2 gammaDot))" \
+        "$work/c/log.wavyShearFoam" || fail "no critical-load group reported"
+    grep -q "^    criticalLoadContact .*F_CL = 0.1" "$work/c/log.wavyShearFoam" \
+        || fail "the model does not use the converted critical load"
     ;;
 
 badDeltaT)

@@ -1,5 +1,6 @@
 #include "suspensionUnits.H"
 #include "inputChecks.H"
+#include "forces/CriticalLoadContact.H"
 #include "forces/ElectroChemicalScales.H"
 
 #include <utility>
@@ -35,6 +36,7 @@ const std::pair<const char*, const char*> siEntries[] =
     {"kn", "N/m"},
     {"kt", "N/m"},
     {"gammaN", "kg/s"},
+    {"criticalLoad", "N"},
     {"FER", "N"},
     {"hamaker", "J"},
     {"debyeLength", "m"},
@@ -136,6 +138,20 @@ void Foam::suspensionUnits::convert()
         (
             "contact/damping", input("gammaN")*gammaDot/kn, "gammaN gammaDot/kn"
         );
+        const dictionary& contact = reduced_.subDict("contact");
+        if
+        (
+            contact.getOrDefault<word>("type", "")
+         == suspension::CriticalLoadContact::typeName
+        )
+        {
+            setGroup
+            (
+                "contact/criticalLoad",
+                input("criticalLoad")/(eta0*sqr(a0)*gammaDot),
+                "F_CL/(eta0 a0^2 gammaDot)"
+            );
+        }
     }
 
     if (reduced_.found("electroChemical", keyType::LITERAL))
