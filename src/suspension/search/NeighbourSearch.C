@@ -26,11 +26,6 @@ namespace
         return a.lo < b.lo || (a.lo == b.lo && a.hi < b.hi);
     }
 
-    ContactState reversed(const ContactState& s)
-    {
-        return ContactState{-s.xiT, -s.xiR};
-    }
-
     //- Throws unless `list` is empty or a consistent list of the particles
     void checkList(const Particles& p, const PairList& list)
     {
@@ -67,7 +62,7 @@ namespace
                     const std::int64_t b = p.id[list.j[k]];
                     contacts.push_back
                     (
-                        a < b ? Contact{a, b, s} : Contact{b, a, reversed(s)}
+                        a < b ? Contact{a, b, s} : Contact{b, a, s.reversed()}
                     );
                 }
             }
@@ -114,7 +109,7 @@ namespace
                     std::lower_bound(contacts.begin(), contacts.end(), key);
                 if (it != contacts.end() && it->lo == key.lo && it->hi == key.hi)
                 {
-                    list.setHistory(k, a < b ? it->state : reversed(it->state));
+                    list.setHistory(k, a < b ? it->state : it->state.reversed());
                     ++carried;
                 }
             }
