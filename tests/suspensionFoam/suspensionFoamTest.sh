@@ -230,6 +230,10 @@ run)
         done
         grep -q "nParticles *$N;" "$work/c/$t/uniform/suspensionState" \
             || fail "$t: suspensionState"
+        # OpenFOAM numbers new particles from this count: N at every write
+        grep -q "particleCount *$N;" \
+            "$work/c/$t/uniform/lagrangian/suspension/cloudProperties" \
+            || fail "$t: cloudProperties particleCount is not $N"
         [ -f "$work/c/postProcessing/profiles/$t/profiles.dat" ] \
             || fail "$t: no profiles.dat"
     done

@@ -418,6 +418,16 @@ void Foam::suspensionIO::write
         pp->origId() = label(p.id[i]);
         cloud.addParticle(pp);
     }
+    // OpenFOAM numbers new particles from particleCount (written to
+    // uniform/lagrangian/<cloud>/cloudProperties); every construction above
+    // raised it, so a cloud written twice would claim twice its particles:
+    // the particles created are those with the ids in use
+    label nextId = 0;
+    for (const std::int64_t id : p.id)
+    {
+        nextId = max(nextId, label(id) + 1);
+    }
+    passiveParticle::particleCount_ = nextId;
     cloud.write();
 
     const auto particleOut = [&](const word& name)
