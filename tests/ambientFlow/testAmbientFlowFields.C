@@ -310,3 +310,47 @@ TEST_F(AmbientFlowFields, MeshSampledFlowIsExactForShearAndConvergesForTheWave)
     const std::string message = ioErrorOf([&]() { ambientFlow::New(wave, box); });
     EXPECT_PRED2(contains, message, "samples its flow on the case mesh");
 }
+
+
+TEST_F(AmbientFlowFields, MeshSampledFlowIsTheSameFromManyThreads)
+{
+    // The engine samples the flow from OpenMP threads: the demand-driven
+    // mesh data that the search and the interpolation use is built when
+    // the flow is made, and a fresh flow sampled at 4000 points on four
+    // threads gives bitwise what one thread gives
+    const std::unique_ptr<Time> runTime = time();
+    const dictionary wave = flowDict
+    (
+        "type meshSampled;"
+        " flow { type wavyShear; shearRate 1; amplitude 0.5; periods 1; }"
+    );
+    std::mt19937 gen(5);
+    std::uniform_real_distribution<double> u(0, 1);
+    std::vector<point> points(4000);
+    for (point& p : points)
+    {
+        p = point(4*u(gen), 6*u(gen), 2*u(gen));
+    }
+    auto sampleAll = [&](int threads)
+    {
+        const std::unique_ptr<fvMesh> m = mesh(*runTime, 8, 16, 8);
+        const autoPtr<ambientFlow> flow(ambientFlow::New(wave, box, m.get()));
+        EXPECT_TRUE(m->hasCellPoints() && m->hasPointCells());
+        std::vector<suspension::FlowSample> f(points.size());
+        #pragma omp parallel for schedule(dynamic, 16) num_threads(threads)
+        for (std::size_t k = 0; k < points.size(); ++k)
+        {
+            f[k] = flow->sample(points[k]);
+        }
+        return f;
+    };
+    const std::vector<suspension::FlowSample> one = sampleAll(1);
+    const std::vector<suspension::FlowSample> four = sampleAll(4);
+    for (std::size_t k = 0; k < points.size(); ++k)
+    {
+        EXPECT_EQ(one[k].U, four[k].U) << "point " << k;
+        EXPECT_EQ(one[k].gradU, four[k].gradU) << "point " << k;
+        EXPECT_EQ(one[k].laplacianU, four[k].laplacianU) << "point " << k;
+        EXPECT_EQ(one[k].gradLaplacianU, four[k].gradLaplacianU) << "point " << k;
+    }
+}

@@ -101,8 +101,16 @@ Foam::meshSampled::meshSampled
     interpolateLaplacianU_(laplacianU_),
     interpolateGradLaplacianU_(gradLaplacianU_)
 {
-    // Build the cell search tree now: later searches run on many threads
+    // Build now what the cell search and the cell-point interpolation
+    // build on first use (OpenFOAM's demand-driven mesh data): the engine
+    // samples the flow from many threads
     (void)mesh_.cellTree();
+    (void)mesh_.tetBasePtIs();
+    (void)mesh_.cellCentres();
+    (void)mesh_.faceCentres();
+    (void)mesh_.faceAreas();
+    (void)mesh_.cellPoints();
+    (void)mesh_.pointCells();
 
     Info<< "    sampled on " << mesh_.nCells() << " cells" << endl;
 }
