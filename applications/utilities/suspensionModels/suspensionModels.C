@@ -154,16 +154,6 @@ namespace
             const std::size_t slash = path_.rfind('/');
             return at(slash == std::string::npos ? "" : path_.substr(0, slash));
         }
-
-        const ModelInput& sibling(const std::string& name) const override
-        {
-            const std::size_t slash = path_.rfind('/');
-            return at
-            (
-                (slash == std::string::npos ? "" : path_.substr(0, slash + 1))
-              + name
-            );
-        }
     };
 
     const char* yes(bool b)

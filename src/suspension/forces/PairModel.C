@@ -1,6 +1,5 @@
 #include "forces/PairModel.H"
 
-#include <cmath>
 #include <limits>
 
 namespace suspension
@@ -21,14 +20,6 @@ ModelInput::Range ModelInput::Range::nonNegative()
 ModelInput::Range ModelInput::Range::open(double a, double b)
 {
     return {a, b, true, true};
-}
-
-
-bool ModelInput::Range::contains(double v) const
-{
-    return std::isfinite(v)
-        && (minOpen ? v > min : v >= min)
-        && (maxOpen ? v < max : v <= max);
 }
 
 } // namespace suspension

@@ -133,12 +133,6 @@ Foam::forceModelsReader::input::parent() const
 }
 
 
-const suspension::ModelInput&
-Foam::forceModelsReader::input::sibling(const std::string& name) const
-{
-    return reader_.inputOf(dict_.parent().subDict(name));
-}
-
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
