@@ -1,27 +1,41 @@
-# Imported target OpenFOAM::finiteVolume: the Debian v1912 libraries in
-# /usr/lib with the headers that etc/bootstrap extracted from Debian's source
-# package (WSF_FOAM_SRC). Flags and link order as the libraries were built
-# (OpenFOAM's wmake rules linux64Gcc: -m64, WM_DP, WM_LABEL_SIZE=32).
-set(WSF_FOAM_SRC "$ENV{WSF_FOAM_SRC}" CACHE PATH "OpenFOAM v1912 source tree with lnInclude folders")
-if(NOT WSF_FOAM_SRC)
-    set(WSF_FOAM_SRC "/opt/wavyShearFoam/OpenFOAM-v1912" CACHE PATH "" FORCE)
+# For the tests that compile against OpenFOAM and the project's wmake-built
+# libraries (the libraries themselves are built by wmake, not here).
+#
+# OpenFOAM::finiteVolume: OpenFOAM's headers ($FOAM_SRC/*/lnInclude: your own
+# installation, or the tree etc/bootstrap prepared from Debian's source
+# package) and libraries ($FOAM_LIBBIN, or Debian's /usr/lib), with the
+# definitions and link flags of wmake's linux64Gcc rules.
+# wsf::ambientFlow, wsf::suspensionFoam: libambientFlow and libsuspensionFoam
+# from $FOAM_USER_LIBBIN, with their lnInclude folders.
+set(WSF_FOAM_SRC "$ENV{FOAM_SRC}" CACHE PATH "OpenFOAM's src/ with lnInclude folders (FOAM_SRC)")
+set(WSF_FOAM_LIBBIN "$ENV{FOAM_LIBBIN}" CACHE PATH "OpenFOAM's libraries (FOAM_LIBBIN)")
+set(WSF_FOAM_ETC "$ENV{WM_PROJECT_DIR}" CACHE PATH "WM_PROJECT_DIR for running OpenFOAM programs")
+if(NOT EXISTS "${WSF_FOAM_SRC}/finiteVolume/lnInclude/fvCFD.H")
+    message(FATAL_ERROR "OpenFOAM headers not found in FOAM_SRC=${WSF_FOAM_SRC}: run etc/bootstrap and source etc/bashrc")
 endif()
-if(NOT EXISTS "${WSF_FOAM_SRC}/src/OpenFOAM/lnInclude/fvCFD.H" AND
-   NOT EXISTS "${WSF_FOAM_SRC}/src/finiteVolume/lnInclude/fvCFD.H")
-    message(FATAL_ERROR "OpenFOAM headers not found in WSF_FOAM_SRC=${WSF_FOAM_SRC}: run etc/bootstrap")
-endif()
-set(WSF_FOAM_ETC "/usr/share/openfoam" CACHE PATH "WM_PROJECT_DIR for running OpenFOAM programs")
 
 add_library(OpenFOAM_finiteVolume INTERFACE)
 add_library(OpenFOAM::finiteVolume ALIAS OpenFOAM_finiteVolume)
 foreach(dir OpenFOAM OSspecific/POSIX finiteVolume meshTools lagrangian/basic fileFormats surfMesh)
-    target_include_directories(OpenFOAM_finiteVolume SYSTEM INTERFACE "${WSF_FOAM_SRC}/src/${dir}/lnInclude")
+    target_include_directories(OpenFOAM_finiteVolume SYSTEM INTERFACE "${WSF_FOAM_SRC}/${dir}/lnInclude")
 endforeach()
 target_compile_definitions(OpenFOAM_finiteVolume INTERFACE
     WM_DP WM_LABEL_SIZE=32 NoRepository OPENFOAM=1912)
 target_compile_options(OpenFOAM_finiteVolume INTERFACE
     -m64 -ftemplate-depth-100 -Wno-deprecated-declarations -Wno-old-style-cast)
+target_link_directories(OpenFOAM_finiteVolume INTERFACE "${WSF_FOAM_LIBBIN}")
 target_link_options(OpenFOAM_finiteVolume INTERFACE
     -Wl,--add-needed -Wl,--no-as-needed)
 target_link_libraries(OpenFOAM_finiteVolume INTERFACE
     lagrangian finiteVolume meshTools OpenFOAM dl m)
+
+# The project's wmake-built libraries (an INTERFACE target: the lnInclude
+# folders and the libraries appear only when wmake has run)
+foreach(lib ambientFlow suspensionFoam)
+    add_library(wsf_${lib} INTERFACE)
+    add_library(wsf::${lib} ALIAS wsf_${lib})
+    target_include_directories(wsf_${lib} INTERFACE "${PROJECT_SOURCE_DIR}/src/${lib}/lnInclude")
+    target_link_libraries(wsf_${lib} INTERFACE "${WSF_LIBBIN}/lib${lib}.so")
+endforeach()
+target_link_libraries(wsf_ambientFlow INTERFACE suspension OpenFOAM::finiteVolume)
+target_link_libraries(wsf_suspensionFoam INTERFACE wsf::ambientFlow)

@@ -19,7 +19,7 @@ cd "$top"
 # Each binary finds its own engine library by its RUNPATH
 unset LD_LIBRARY_PATH
 repeats="${1:-5}"
-new="$WSF_PLATFORM/bin/suspensionBenchmark"
+new="$FOAM_USER_APPBIN/suspensionBenchmark"
 ref="${2:-}"
 if [ -z "$ref" ]; then
     refTree=/tmp/wsf-reference

@@ -11,7 +11,7 @@ here="$(cd "$(dirname "$0")" && pwd)"
 cd "$here/../.."
 . etc/bashrc
 unset LD_LIBRARY_PATH
-new="$WSF_PLATFORM/bin/suspensionBenchmark"
+new="$FOAM_USER_APPBIN/suspensionBenchmark"
 ref="${1:-/tmp/wsf-reference/platforms/linux64GccDPInt32Opt/bin/suspensionBenchmark}"
 out="$here/instructions.csv"
 steps=10

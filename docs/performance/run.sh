@@ -11,7 +11,7 @@ here="$(cd "$(dirname "$0")" && pwd)"
 cd "$here/../.."
 . etc/bashrc
 repeats="${1:-3}"
-bench="$WSF_PLATFORM/bin/suspensionBenchmark"
+bench="$FOAM_USER_APPBIN/suspensionBenchmark"
 out="$here/benchmark.csv"
 
 {

@@ -33,6 +33,8 @@ binDir=$1
 export WM_PROJECT_DIR=$2
 test=$3
 export PATH="$binDir:$PATH"
+# wmake-built programs find the libraries next to them ($FOAM_USER_LIBBIN)
+export LD_LIBRARY_PATH="$binDir/../lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
 export OMP_NUM_THREADS=1
 export OMP_WAIT_POLICY=PASSIVE
 
