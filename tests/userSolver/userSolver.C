@@ -1,0 +1,41 @@
+/*---------------------------------------------------------------------------*\
+Application
+    userSolver
+
+Description
+    A user's own solver on the project's libraries, built with wmake from
+    its own Make/files and Make/options (tests/userSolver/userSolverTest.sh
+    builds and runs it; README "Using the libraries in your own solver").
+    It selects an ambient flow from constant/suspensionProperties, prints it
+    at the centre of the mesh, and evolves the suspension cloud.
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "ambientFlow.H"
+#include "suspensionCloud.H"
+
+int main(int argc, char *argv[])
+{
+    #include "setRootCase.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+
+    const IOdictionary properties
+    (
+        IOobject("suspensionProperties", runTime.constant(), mesh, IOobject::MUST_READ)
+    );
+    const autoPtr<ambientFlow> flow =
+        ambientFlow::New(properties.subDict("ambientFlow"), mesh.bounds().span(), &mesh);
+    Info<< "userSolver: U at the centre " << flow->U(mesh.bounds().centre()) << endl;
+
+    suspensionCloud particles(runTime, mesh);
+    while (runTime.run())
+    {
+        ++runTime;
+        particles.evolve();
+        runTime.write();
+    }
+    Info<< "End\n" << endl;
+    return 0;
+}
