@@ -278,3 +278,37 @@ TEST(Simulation, SqueezeStepLimitIsTheStabilityEdge)
     EXPECT_LT(maxSpeed(0.9), 2e-3);
     EXPECT_GT(maxSpeed(1.1), 1e-2);
 }
+
+
+TEST(Simulation, AdvanceTakesFullStepsAndAShorterLastOne)
+{
+    // An interval of 2.1 steps is two steps of deltaT() and one of 0.1
+    // deltaT(), bitwise the same as taking them one by one, and lands on the
+    // end of the interval exactly
+    const Vec3 L(12, 12, 12);
+    LeesEdwardsBox box(L, 1.0);
+    const ShearFlow flow(1.0);
+    const Particles p = randomParticles(L, 60, 1.4, 11);
+    Simulation::Params params = simParams();
+    params.deltaT = 1e-4;
+    Simulation a(p, box, flow, allModels(), params);
+    Simulation b(p, box, flow, allModels(), params);
+    a.start(0);
+    b.start(0);
+    const double dt = a.deltaT();
+    ASSERT_EQ(dt, 1e-4);
+    a.advance(2.1*dt);
+    b.step(dt);
+    b.step(dt);
+    b.step(2.1*dt - 2*dt);
+    EXPECT_EQ(a.steps(), 3u);
+    EXPECT_EQ(a.time(), 2.1*dt);
+    for (std::size_t i = 0; i < p.size(); ++i)
+    {
+        EXPECT_EQ(a.particles().x[i], b.particles().x[i]) << "particle " << i;
+        EXPECT_EQ(a.particles().u[i], b.particles().u[i]) << "particle " << i;
+    }
+    // A whole number of steps takes no extra step of round-off size
+    a.advance(3*dt);
+    EXPECT_EQ(a.steps(), 6u);
+}

@@ -216,14 +216,17 @@ void Simulation::advance(double interval)
             }
         }
     }
+    // n - 1 steps of dtMax and the rest; the (1 - 1e-12) keeps an interval
+    // of a whole number of steps from a last step of round-off size
     const auto n = static_cast<std::uint64_t>(std::ceil(interval/dtMax_*(1 - 1e-12)));
-    const double dt = interval/static_cast<double>(n);
     const double t0 = time_;
-    for (std::uint64_t k = 1; k <= n; ++k)
+    for (std::uint64_t k = 1; k < n; ++k)
     {
-        step(dt);
-        time_ = t0 + k*dt;      // no round-off drift over many steps
+        step(dtMax_);
+        time_ = t0 + k*dtMax_;  // no round-off drift over many steps
     }
+    step(t0 + interval - time_);
+    time_ = t0 + interval;
 }
 
 
