@@ -9,6 +9,8 @@ binDir=$1
 export WM_PROJECT_DIR=$2
 here=$(cd "$(dirname "$0")" && pwd)
 export PATH="$binDir:$PATH" OMP_NUM_THREADS=1 OMP_WAIT_POLICY=PASSIVE
+# libsuspensionFunctionObjects (libs in the case's controlDict)
+export LD_LIBRARY_PATH="$binDir/../lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
 
 for tool in pvpython xvfb-run; do
     command -v "$tool" > /dev/null || { echo "viewerTest: $tool not installed (etc/bootstrap --viewer)" >&2; exit 1; }
