@@ -675,6 +675,9 @@ userFunctionObject)
     [ "$(rows "$dat" | wc -l)" -eq 4 ] || fail "particleCount.dat: not 4 rows"
     awk -v n=$N '!/^#/ && $2 != n { exit 1 }' "$dat" \
         || fail "particleCount.dat: a count is not $N"
+    # It ran after the step of its time: strain = gammaDot t = t
+    awk '!/^#/ && ($3 - $1)^2 > (1e-9*$1)^2 { exit 1 }' "$dat" \
+        || fail "particleCount.dat: the strain is not that of the time"
     # The strain it saw is the one of the rheology row of the same time
     diff <(rows "$dat" | awk '{ print $1, $3 + 0 }') \
          <(rows "$work/c/postProcessing/rheology/0/rheology.dat" \
