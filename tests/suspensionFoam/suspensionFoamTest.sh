@@ -576,7 +576,10 @@ overlappingStart|jammedStart)
 referenceOutput)
     # reference/ holds what the solver of commit e082e66 (the cloud wrote
     # its own output) wrote for tiny/ with makeSuspension, on one thread:
-    # the function objects must write the same numbers in the same files
+    # the function objects must write the same numbers in the same files.
+    # A change of the engine's numbers on purpose remakes them: these steps
+    # on a copy of tiny/ (OMP_NUM_THREADS=1), then copy the 14 files
+    # (find reference -type f)
     newCase c
     (cd "$work/c" && makeSuspension > log.makeSuspension 2>&1) \
         || fail "makeSuspension"
