@@ -99,8 +99,9 @@ wavy()
     if [ $mode = quick ]; then N=1024; end=0.02; fi
     local t
     for t in NW YW; do
-        point wavy "$t-N$N" wavyShear/$t $end 0.01 population/nParticles=$N \
-            electroChemical/attraction/cutoff=0.5 output/profileBins=16 || failed=1
+        WSF_CASE_SETUP="setEntry system/controlDict functions/profiles/nBins 16" \
+            point wavy "$t-N$N" wavyShear/$t $end 0.01 population/nParticles=$N \
+            electroChemical/attraction/cutoff=0.5 || failed=1
     done
 }
 

@@ -8,6 +8,23 @@
 # Tests:
 #   run         a short run: exit 0, rheology.dat header and rows, N entries
 #               in every cloud field, fields and profiles at the write times
+#               (the function objects of tiny/system/controlDict)
+#   referenceOutput
+#               rheology.dat, profiles.dat and the fields of the function
+#               objects are, byte for byte, those the solver wrote itself
+#               before the function objects (reference/, see there)
+#   functionObjectsOff
+#               without function objects: the state is written, no
+#               rheology.dat, profiles or fields
+#   functionObjectEntries
+#               the entries of the function objects: contributions, fields,
+#               nBins, writeInterval, writeAtStart
+#   userFunctionObject
+#               a function object of the test's own (userFunctionObject/,
+#               library suspensionTestFunctionObjects) finds the cloud by
+#               name and writes the particle count and strain of each step
+#   outputEntry the output entries of earlier versions in
+#               suspensionProperties are an error naming the function objects
 #   restart     a run restarted from a written time matches the
 #               uninterrupted run bitwise (2 threads, contacts with history)
 #   implicitRun the implicitEuler and overdamped integrators: contacts set
@@ -33,8 +50,9 @@ binDir=$1
 export WM_PROJECT_DIR=$2
 test=$3
 export PATH="$binDir:$PATH"
-# wmake-built programs find the libraries next to them ($FOAM_USER_LIBBIN)
-export LD_LIBRARY_PATH="$binDir/../lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
+# wmake-built programs find the libraries next to them ($FOAM_USER_LIBBIN),
+# and the test's own function-object library
+export LD_LIBRARY_PATH="$binDir/../lib${WSF_TEST_FO_LIB_DIR:+:$WSF_TEST_FO_LIB_DIR}${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
 export OMP_NUM_THREADS=1
 export OMP_WAIT_POLICY=PASSIVE
 
@@ -105,7 +123,21 @@ expectInputError()
 }
 
 properties=constant/suspensionProperties
+control=system/controlDict
 N=100
+
+# Run case $1 to its end time: runCase <case> [what]
+runCase()
+{
+    (cd "$work/$1" && wavyShearFoam > log.wavyShearFoam 2>&1) \
+        || fail "wavyShearFoam ${2:-$1}"
+}
+
+# The data rows of a .dat file
+rows()
+{
+    grep -v "^#" "$1"
+}
 
 # Soft, dense: contacts with history form within the first write interval
 # of a run to 0.1 written every 0.05
@@ -540,6 +572,129 @@ overlappingStart|jammedStart)
             "$work/c/postProcessing/rheology/0/rheology.dat" \
             || fail "overlaps above 1% of the radius after the start"
     fi
+    ;;
+
+referenceOutput)
+    # reference/ holds what the solver of commit 7834609 (the cloud wrote
+    # its own output) wrote for tiny/ with makeSuspension, on one thread:
+    # the function objects must write the same numbers in the same files.
+    # A change of the engine's numbers on purpose remakes them: these steps
+    # on a copy of tiny/ (OMP_NUM_THREADS=1), then copy the 14 files
+    # (find reference -type f)
+    newCase c
+    (cd "$work/c" && makeSuspension > log.makeSuspension 2>&1) \
+        || fail "makeSuspension"
+    runCase c
+    reference=$(cd "$(dirname "$0")/reference" && pwd)
+    n=0
+    while IFS= read -r f; do
+        [ -f "$work/c/$f" ] || fail "no $f"
+        cmp "$reference/$f" "$work/c/$f" >&2 || fail "$f differs"
+        n=$((n + 1))
+    done < <(cd "$reference" && find . -type f | sed 's|^\./||' | sort)
+    [ "$n" -eq 14 ] || fail "$n reference files, expected 14"
+    ;;
+
+functionObjectsOff)
+    newCase c
+    foamDictionary -entry functions -remove "$work/c/$control" > /dev/null \
+        2>&1 || fail "cannot remove functions"
+    runCase c
+    [ ! -e "$work/c/postProcessing" ] || fail "postProcessing written"
+    for t in 0 0.002 0.004; do
+        for f in lagrangian/suspension/x lagrangian/suspensionContacts/idI \
+            uniform/suspensionState
+        do
+            [ -f "$work/c/$t/$f" ] || fail "$t: no $f"
+        done
+        for f in Uinf gradUinf shearRateInf particleStress alpha; do
+            [ ! -e "$work/c/$t/$f" ] || fail "$t: $f written"
+        done
+    done
+    grep -q "^strain .* ETA" "$work/c/log.wavyShearFoam" \
+        || fail "no progress report"
+    ;;
+
+functionObjectEntries)
+    newCase c
+    setEntry c $control functions/rheology/contributions "(contact stokes)"
+    setEntry c $control functions/rheology/writeInterval 2
+    setEntry c $control functions/profiles/nBins 3
+    setEntry c $control functions/profiles/writeAtStart false
+    setEntry c $control functions/fields/fields "(alpha Uinf)"
+    runCase c
+    dat="$work/c/postProcessing/rheology/0/rheology.dat"
+    grep "^# Time" "$dat" | grep -q "etaN[[:space:]]*etaR_contact[[:space:]]*etaR_stokes[[:space:]]*nContacts" \
+        || fail "rheology.dat: not the columns etaR_contact etaR_stokes"
+    [ "$(grep "^# Time" "$dat" | grep -o "etaR_" | wc -l)" -eq 2 ] \
+        || fail "rheology.dat: other contributions"
+    [ "$(rows "$dat" | wc -l)" -eq 2 ] || fail "rheology.dat: not 2 rows"
+    awk '!/^#/ && NF != 15 { exit 1 }' "$dat" \
+        || fail "rheology.dat: rows without 15 columns"
+    # The numbers of the full rows (reference/) of the steps written, in
+    # the columns chosen: Time..etaN, etaR_contact, etaR_stokes, the rest
+    diff <(rows "$dat" | awk '{ $1 = $1; print }') \
+         <(rows "$(dirname "$0")/reference/postProcessing/rheology/0/rheology.dat" \
+            | awk 'NR % 2 == 0 { print $1, $2, $3, $4, $5, $6, $7, $10, $8,
+                   $13, $14, $15, $16, $17, $18 }') >&2 \
+        || fail "rheology.dat: not the numbers of the reference rows"
+    [ ! -e "$work/c/postProcessing/profiles/0" ] \
+        || fail "profiles written at the start (writeAtStart false)"
+    for t in 0.002 0.004; do
+        p="$work/c/postProcessing/profiles/$t/profiles.dat"
+        [ "$(rows "$p" | wc -l)" -eq 3 ] || fail "$t: not 3 bins"
+        [ "$(rows "$p" | awk '{ n += $2 } END { print n }')" -eq $N ] \
+            || fail "$t: the bins do not hold the $N particles"
+    done
+    for t in 0 0.002 0.004; do
+        for f in alpha Uinf; do
+            [ -f "$work/c/$t/$f" ] || fail "$t: no $f"
+        done
+        for f in gradUinf shearRateInf particleStress; do
+            [ ! -e "$work/c/$t/$f" ] || fail "$t: $f written"
+        done
+    done
+
+    # Unknown names stop the run with an error naming the valid ones
+    newCase bad
+    setEntry bad $control functions/fields/fields "(alpha sigma)"
+    if (cd "$work/bad" && wavyShearFoam > log.wavyShearFoam 2>&1); then
+        fail "the unknown field was accepted"
+    fi
+    grep -q "Unknown field 'sigma'" "$work/bad/log.wavyShearFoam" \
+        || fail "no error naming the unknown field"
+    grep -q "Valid fields: .*particleStress" "$work/bad/log.wavyShearFoam" \
+        || fail "the error does not list the valid fields"
+    ;;
+
+userFunctionObject)
+    [ -n "${WSF_TEST_FO_LIB_DIR:-}" ] || fail "WSF_TEST_FO_LIB_DIR not set"
+    newCase c
+    foamDictionary -entry functions/count -add \
+        "{ type particleCount; libs (suspensionTestFunctionObjects); writeControl timeStep; writeInterval 1; }" \
+        "$work/c/$control" > /dev/null 2>&1 || fail "cannot add count"
+    runCase c
+    dat="$work/c/postProcessing/count/0/particleCount.dat"
+    [ -f "$dat" ] || fail "no particleCount.dat"
+    [ "$(rows "$dat" | wc -l)" -eq 4 ] || fail "particleCount.dat: not 4 rows"
+    awk -v n=$N '!/^#/ && $2 != n { exit 1 }' "$dat" \
+        || fail "particleCount.dat: a count is not $N"
+    # It ran after the step of its time: strain = gammaDot t = t
+    awk '!/^#/ && ($3 - $1)^2 > (1e-9*$1)^2 { exit 1 }' "$dat" \
+        || fail "particleCount.dat: the strain is not that of the time"
+    # The strain it saw is the one of the rheology row of the same time
+    diff <(rows "$dat" | awk '{ print $1, $3 + 0 }') \
+         <(rows "$work/c/postProcessing/rheology/0/rheology.dat" \
+            | awk '{ print $1, $2 + 0 }') >&2 \
+        || fail "particleCount.dat: the strain differs from rheology.dat"
+    ;;
+
+outputEntry)
+    newCase c
+    foamDictionary -entry output -add "{ rheologyInterval 1; }" \
+        "$work/c/$properties" > /dev/null 2>&1
+    expectInputError c suspensionProperties "rheologyInterval" \
+        suspensionRheology writeInterval profileBins suspensionProfiles
     ;;
 
 *)

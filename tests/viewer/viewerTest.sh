@@ -9,7 +9,8 @@ binDir=$1
 export WM_PROJECT_DIR=$2
 here=$(cd "$(dirname "$0")" && pwd)
 export PATH="$binDir:$PATH" OMP_NUM_THREADS=1 OMP_WAIT_POLICY=PASSIVE
-# wmake-built programs find the libraries next to them ($FOAM_USER_LIBBIN)
+# wmake-built programs and libs (...) find the libraries next to them
+# ($FOAM_USER_LIBBIN)
 export LD_LIBRARY_PATH="$binDir/../lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
 
 for tool in pvpython xvfb-run; do

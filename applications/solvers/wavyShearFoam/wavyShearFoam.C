@@ -23,11 +23,19 @@ Description
     number of threads), or from a new random packing of the population if
     the start time holds none.
 
-    Output: postProcessing/rheology/<startTime>/rheology.dat; at write
-    times the cloud lagrangian/suspension (with positions for ParaView), the
-    contact history, uniform/suspensionState, the fields Uinf, gradUinf,
-    shearRateInf, particleStress, alpha and
-    postProcessing/profiles/<time>/profiles.dat.
+    The suspension (Foam::suspensionCloud) is registered in the mesh as
+    "suspension"; function objects find it by
+    mesh.lookupObject<suspensionCloud>("suspension").
+
+    Output: at write times the cloud lagrangian/suspension (with positions
+    for ParaView), the contact history and uniform/suspensionState (what a
+    restart reads). The rest is written by the function objects of
+    libsuspensionFunctionObjects selected in system/controlDict:
+    suspensionRheology (postProcessing/<name>/<startTime>/rheology.dat),
+    suspensionProfiles (postProcessing/<name>/<time>/profiles.dat) and
+    suspensionFields (Uinf, gradUinf, shearRateInf, particleStress, alpha).
+    runTime.run() executes them at the start of the next time step and at
+    the end of the run, so they see the state after evolve() and write().
 
 \*---------------------------------------------------------------------------*/
 
@@ -54,6 +62,8 @@ int main(int argc, char *argv[])
 
     Info<< "\nStarting time loop\n" << endl;
 
+    // runTime.run() executes the function objects on the state of the
+    // time step before (and at the end, of the last one)
     while (runTime.run())
     {
         ++runTime;

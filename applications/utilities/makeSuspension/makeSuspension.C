@@ -13,7 +13,9 @@ Description
       which blockMeshDict includes so that the mesh spans the box;
     - unless -boxOnly, packs the population at random without overlaps
       and writes it as the suspension of the start time (cloud, contact
-      history, state and fields), ready for the solver and ParaView.
+      history, state), with the fields and profiles of the case's
+      suspensionFields and suspensionProfiles function objects
+      (system/controlDict), ready for the solver and ParaView.
 
     Typical sequence: makeSuspension -boxOnly; blockMesh; makeSuspension.
     The solver packs a new suspension itself when the start time holds
@@ -73,6 +75,28 @@ int main(int argc, char *argv[])
 
         // Packs the population and writes it at the start time
         const suspensionCloud particles(runTime, mesh);
+
+        // The fields and profiles of the packing: the case's function
+        // objects of these types write them when they are constructed
+        // (writeAtStart), as they do in a solver run that packs; the
+        // others (rheology, a user's) are left to the solver
+        const wordList startTypes({"suspensionFields", "suspensionProfiles"});
+        const dictionary* functionsPtr =
+            runTime.controlDict().subDictPtr("functions");
+        if (functionsPtr)
+        {
+            for (const entry& e : *functionsPtr)
+            {
+                if
+                (
+                    e.isDict()
+                 && startTypes.found(e.dict().get<word>("type"))
+                )
+                {
+                    functionObject::New(e.keyword(), runTime, e.dict());
+                }
+            }
+        }
     }
 
     Info<< "End\n" << endl;

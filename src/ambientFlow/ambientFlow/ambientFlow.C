@@ -10,6 +10,11 @@ namespace Foam
     defineRunTimeSelectionTable(ambientFlow, dictionary);
 }
 
+const Foam::wordList Foam::ambientFlow::fieldNames
+({
+    "Uinf", "gradUinf", "shearRateInf"
+});
+
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -98,25 +103,36 @@ Foam::scalar Foam::ambientFlow::localShearRate(const point& p) const
 }
 
 
-void Foam::ambientFlow::writeFields(const fvMesh& mesh) const
+void Foam::ambientFlow::writeFields
+(
+    const fvMesh& mesh,
+    const wordHashSet& names
+) const
 {
-    writeCellAndFaceField<vector>
-    (
-        mesh, "Uinf", dimVelocity,
-        [this](const point& p) { return U(p); }
-    );
-
-    writeCellAndFaceField<tensor>
-    (
-        mesh, "gradUinf", dimless/dimTime,
-        [this](const point& p) { return gradU(p); }
-    );
-
-    writeCellAndFaceField<scalar>
-    (
-        mesh, "shearRateInf", dimless/dimTime,
-        [this](const point& p) { return localShearRate(p); }
-    );
+    if (names.found("Uinf"))
+    {
+        writeCellAndFaceField<vector>
+        (
+            mesh, "Uinf", dimVelocity,
+            [this](const point& p) { return U(p); }
+        );
+    }
+    if (names.found("gradUinf"))
+    {
+        writeCellAndFaceField<tensor>
+        (
+            mesh, "gradUinf", dimless/dimTime,
+            [this](const point& p) { return gradU(p); }
+        );
+    }
+    if (names.found("shearRateInf"))
+    {
+        writeCellAndFaceField<scalar>
+        (
+            mesh, "shearRateInf", dimless/dimTime,
+            [this](const point& p) { return localShearRate(p); }
+        );
+    }
 }
 
 

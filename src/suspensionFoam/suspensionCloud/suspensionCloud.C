@@ -1,12 +1,19 @@
 #include "suspensionCloud.H"
 #include "inputChecks.H"
-#include "particleFields.H"
 #include "boundBox.H"
 
 #include <omp.h>
 
 #include <cmath>
 #include <cstdio>
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(suspensionCloud, 0);
+}
+
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -174,44 +181,31 @@ void Foam::suspensionCloud::start(const scalar t, const bool forcesGiven)
 }
 
 
-void Foam::suspensionCloud::writeState(suspension::Simulation& sim) const
+void Foam::suspensionCloud::writeState() const
 {
-    std::vector<suspension::Mat3> S;
-    sim.particleStresslets(S);
-    const labelList cells = suspensionIO::findCells(mesh_, sim.particles());
-
-    suspensionIO::write(mesh_, sim, steps(sim), S, cells);
-    writeParticleFields(mesh_, sim.particles(), S, cells);
-    profiles_.write
+    suspensionIO::write
     (
-        sim.particles(), S, *flow_, sim.models().drag().params().eta
+        mesh_, *sim_, steps(*sim_), particleStresslets(), particleCells()
     );
-    flow_->writeFields(mesh_);
-}
-
-
-void Foam::suspensionCloud::write()
-{
-    writeState(*sim_);
 
     // A run restarted from this time starts by re-sorting the particles and
-    // rebuilding the neighbour list; so does this one, so that both continue
-    // from the same state in the same order
-    start(sim_->time(), true);
+    // rebuilding the neighbour list; so does this one before its next step
+    written_ = true;
 }
 
 
 void Foam::suspensionCloud::failed(const suspension::SimulationError& err)
 {
+    // The last good state is the one written (writeObject)
+    sim_.emplace(*lastGood_);
     runTime_.setTime(lastGoodTime_, lastGoodIndex_);
-    writeState(*lastGood_);
     runTime_.writeNow();
 
     FatalErrorInFunction
         << err.what() << nl
         << "    The last good state (time " << runTime_.timeName()
-        << ", strain " << lastGood_->time() << ", step "
-        << steps(*lastGood_) << ") is written to " << runTime_.timePath()
+        << ", strain " << sim_->time() << ", step "
+        << steps(*sim_) << ") is written to " << runTime_.timePath()
         << nl << "    To continue from it, lower integration/deltaT or"
         << " safety, or raise contact/stiffness" << nl
         << exit(FatalError);
@@ -316,6 +310,17 @@ void Foam::suspensionCloud::reportProgress()
 
 Foam::suspensionCloud::suspensionCloud(Time& runTime, const fvMesh& mesh)
 :
+    regIOobject
+    (
+        IOobject
+        (
+            suspensionIO::cloudName,
+            runTime.timeName(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::AUTO_WRITE
+        )
+    ),
     runTime_(runTime),
     mesh_(mesh),
     properties_(mesh),
@@ -327,8 +332,10 @@ Foam::suspensionCloud::suspensionCloud(Time& runTime, const fvMesh& mesh)
     lastGood_(),
     lastGoodTime_(runTime.value()),
     lastGoodIndex_(runTime.timeIndex()),
-    rheology_(),
-    profiles_(mesh, properties_.profileBins()),
+    meanDeltaT_(0),
+    written_(false),
+    S_(),
+    SIndex_(-1),
     started_(clock::now()),
     reported_(started_),
     reportedSteps_(0),
@@ -381,7 +388,7 @@ Foam::suspensionCloud::suspensionCloud(Time& runTime, const fvMesh& mesh)
 
     if (!restart_)
     {
-        write();
+        writeState();
     }
     lastGood_.emplace(*sim_);
 }
@@ -389,8 +396,63 @@ Foam::suspensionCloud::suspensionCloud(Time& runTime, const fvMesh& mesh)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+const Foam::suspensionCloud& Foam::suspensionCloud::lookup
+(
+    const objectRegistry& mesh,
+    const word& user
+)
+{
+    const suspensionCloud* cloudPtr =
+        mesh.findObject<suspensionCloud>(suspensionIO::cloudName);
+    if (!cloudPtr)
+    {
+        FatalErrorInFunction
+            << "Function object " << user << " needs the suspension cloud '"
+            << suspensionIO::cloudName << "' of wavyShearFoam, which mesh "
+            << mesh.name() << " does not hold: run it with wavyShearFoam"
+            << nl << exit(FatalError);
+    }
+    return *cloudPtr;
+}
+
+
+const std::vector<suspension::Mat3>&
+Foam::suspensionCloud::particleStresslets() const
+{
+    if (SIndex_ != runTime_.timeIndex())
+    {
+        // Evaluating the stresslets changes no state of the engine
+        // (Simulation::particleStresslets)
+        const_cast<suspension::Simulation&>(*sim_).particleStresslets(S_);
+        SIndex_ = runTime_.timeIndex();
+    }
+    return S_;
+}
+
+
+Foam::labelList Foam::suspensionCloud::particleCells() const
+{
+    return suspensionIO::findCells(mesh_, sim_->particles());
+}
+
+
+bool Foam::suspensionCloud::newPackingWritten() const
+{
+    return !restart_ && runTime_.timeIndex() == runTime_.startTimeIndex();
+}
+
+
 void Foam::suspensionCloud::evolve()
 {
+    // The state (and the order of the particles) changes
+    SIndex_ = -1;
+
+    if (written_)
+    {
+        start(sim_->time(), true);
+        written_ = false;
+    }
+
     const std::uint64_t before = sim_->steps();
     try
     {
@@ -400,24 +462,7 @@ void Foam::suspensionCloud::evolve()
     {
         failed(err);
     }
-
-    if (runTime_.timeIndex() % properties_.rheologyInterval() == 0)
-    {
-        if (!rheology_)
-        {
-            rheology_.emplace(mesh_, sim_->implicit() != nullptr);
-        }
-        rheology_->write
-        (
-            *sim_,
-            steps(*sim_),
-            runTime_.deltaTValue()/(sim_->steps() - before)
-        );
-    }
-    if (runTime_.writeTime())
-    {
-        write();
-    }
+    meanDeltaT_ = runTime_.deltaTValue()/(sim_->steps() - before);
 
     lastGood_.reset();
     lastGood_.emplace(*sim_);
@@ -425,6 +470,19 @@ void Foam::suspensionCloud::evolve()
     lastGoodIndex_ = runTime_.timeIndex();
 
     reportProgress();
+}
+
+
+bool Foam::suspensionCloud::writeObject
+(
+    IOstream::streamFormat,
+    IOstream::versionNumber,
+    IOstream::compressionType,
+    const bool
+) const
+{
+    writeState();
+    return true;
 }
 
 

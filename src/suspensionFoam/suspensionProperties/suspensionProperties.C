@@ -106,12 +106,24 @@ suspension::Simulation::Params readIntegration
 }
 
 
-//- Profile bins: the entry, or bins one reference diameter 2 a0 high
-label readProfileBins(const dictionary& dict, const scalar Ly)
+//- The output settings of earlier versions are function objects now
+void rejectOutputDict(const dictionary& dict)
 {
-    return dict.found("profileBins", keyType::LITERAL)
-      ? getLabelAtLeast(dict, "profileBins", 1)
-      : max(label(1), label(Ly/2));
+    if (dict.found("output", keyType::LITERAL))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'output' of " << dict.name() << " is no longer read:"
+            << " the output is selected by function objects in"
+            << " system/controlDict" << nl
+            << "    rheologyInterval n  ->  functions { rheology { type"
+            << " suspensionRheology; libs (suspensionFunctionObjects);"
+            << " writeControl timeStep; writeInterval n; } }" << nl
+            << "    profileBins n       ->  functions { profiles { type"
+            << " suspensionProfiles; libs (suspensionFunctionObjects);"
+            << " writeControl writeTime; nBins n; } }" << nl
+            << "    Remove 'output' (see the tutorials' controlDict)" << nl
+            << exit(FatalIOError);
+    }
 }
 
 } // End anonymous namespace
@@ -142,20 +154,18 @@ Foam::suspensionProperties::suspensionProperties(const objectRegistry& obr)
             subDict("integration"),
             getScalarIn(units_.reduced(), "StokesNumber", interval::positive())
         )
-    ),
-    rheologyInterval_(getLabelAtLeast(subDict("output"), "rheologyInterval", 1)),
-    profileBins_(readProfileBins(subDict("output"), population_.box().y()))
+    )
 {
+    rejectOutputDict(*this);
     checkEntries
     (
         *this,
         {
             "units", "dimensional", "population", "StokesNumber",
             "lubrication", "contact", "electroChemical", "integration",
-            "ambientFlow", "output"
+            "ambientFlow"
         }
     );
-    checkEntries(subDict("output"), {"rheologyInterval", "profileBins"});
 }
 
 

@@ -1,0 +1,138 @@
+#include "suspensionProfiles.H"
+#include "suspensionCloud.H"
+#include "inputChecks.H"
+#include "OFstream.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace functionObjects
+{
+    defineTypeNameAndDebug(suspensionProfiles, 0);
+    addToRunTimeSelectionTable(functionObject, suspensionProfiles, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::functionObjects::suspensionProfiles::suspensionProfiles
+(
+    const word& name,
+    const Time& runTime,
+    const dictionary& dict
+)
+:
+    fvMeshFunctionObject(name, runTime, dict),
+    writeFile(mesh_, name, "profiles"),
+    nBins_(1)
+{
+    read(dict);
+
+    if
+    (
+        dict.getOrDefault<bool>("writeAtStart", true)
+     && suspensionCloud::lookup(mesh_, name).newPackingWritten()
+    )
+    {
+        write();
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::functionObjects::suspensionProfiles::read(const dictionary& dict)
+{
+    fvMeshFunctionObject::read(dict);
+    writeFile::read(dict);
+
+    // Default: bins one reference diameter 2 a0 high
+    const scalar Ly = suspensionCloud::lookup(mesh_, name()).flow().box().y();
+    nBins_ =
+        dict.found("nBins", keyType::LITERAL)
+      ? getLabelAtLeast(dict, "nBins", 1)
+      : max(label(1), label(Ly/2));
+
+    return true;
+}
+
+
+bool Foam::functionObjects::suspensionProfiles::execute()
+{
+    return true;
+}
+
+
+bool Foam::functionObjects::suspensionProfiles::write()
+{
+    const suspensionCloud& cloud = suspensionCloud::lookup(mesh_, name());
+    const suspension::Particles& p = cloud.simulation().particles();
+    const std::vector<suspension::Mat3>& S = cloud.particleStresslets();
+    const ambientFlow& flow = cloud.flow();
+    const scalar eta0 = cloud.eta0();
+
+    const vector& L = flow.box();
+    const scalar h = L.y()/nBins_;
+    const scalar binVolume = L.x()*h*L.z();
+
+    labelList n(nBins_, Zero);
+    scalarField volume(nBins_, Zero);
+    scalarField Ux(nBins_, Zero);
+    scalarField Sxy(nBins_, Zero);
+    for (std::size_t i = 0; i < p.size(); ++i)
+    {
+        const label bin = min(nBins_ - 1, label(p.x[i].y()/h));
+        ++n[bin];
+        volume[bin] += sphereVolume(p.a[i]);
+        Ux[bin] += p.u[i].x();
+        Sxy[bin] += 0.5*(S[i](0, 1) + S[i](1, 0));
+    }
+
+    autoPtr<OFstream> osPtr = createFile("profiles", time_.value());
+    if (!osPtr.valid())
+    {
+        // Not the master, or writeToFile off
+        return true;
+    }
+    OFstream& os = osPtr();
+    writeHeader
+    (
+        os,
+        "Profiles across y at time " + time_.timeName()
+      + " (fig. 10 of Monti et al. 2021): " + Foam::name(nBins_)
+      + " bins of height " + Foam::name(h) + "; reduced units"
+    );
+    writeCommented(os, "y");
+    for
+    (
+        const char* column
+      : {"nParticles", "phi", "Ux", "Uinf", "shearRate", "etaR"}
+    )
+    {
+        writeTabbed(os, column);
+    }
+    os  << endl;
+
+    forAll(n, bin)
+    {
+        const point centre(0.5*L.x(), (bin + 0.5)*h, 0.5*L.z());
+        const scalar shearRate = flow.localShearRate(centre);
+        const scalar sigmaXY = eta0*shearRate + Sxy[bin]/binVolume;
+
+        os  << centre.y()
+            << tab << n[bin]
+            << tab << volume[bin]/binVolume
+            << tab << (n[bin] ? Ux[bin]/n[bin] : 0)
+            << tab << flow.U(centre).x()
+            << tab << shearRate
+            << tab << sigmaXY/(eta0*shearRate) << nl;
+    }
+
+    return true;
+}
+
+
+// ************************************************************************* //
