@@ -374,6 +374,38 @@ TEST_F(AmbientFlowFields, MeshSampledFlowIsTheSameFromManyThreads)
 }
 
 
+TEST_F(AmbientFlowFields, SelectedForAMeshSpanningTheBox)
+{
+    // New(mesh, dict), as another solver would call it: the box is the
+    // mesh's span, so the wave's period is the mesh height
+    const std::unique_ptr<Time> runTime = time();
+    const std::unique_ptr<fvMesh> m = mesh(*runTime, 4, 8, 2);
+    const autoPtr<ambientFlow> wave
+    (
+        ambientFlow::New
+        (
+            *m, flowDict("type wavyShear; shearRate 1; amplitude 2; periods 1;")
+        )
+    );
+    EXPECT_EQ(wave->box(), box);
+    EXPECT_DOUBLE_EQ(wave->U(point(1, 1.5, 1)).x(), 1.5 + 2);
+
+    const autoPtr<ambientFlow> sampled
+    (
+        ambientFlow::New
+        (
+            *m,
+            flowDict
+            (
+                "type meshSampled; flow { type uniformShear; shearRate 1; }"
+            )
+        )
+    );
+    EXPECT_EQ(sampled->type(), "meshSampled");
+    EXPECT_EQ(sampled->bounds(), m->bounds());
+}
+
+
 TEST_F(AmbientFlowFields, MeshSampledFlowIsFoundOnTheBoundaryOnly)
 {
     // The box 4 x 6 x 2 is the mesh: its faces, edges and corners (within
