@@ -287,3 +287,35 @@ TEST(AmbientFlowDerivatives, AdapterGivesTheFoamValues)
         }
     }
 }
+
+
+TEST(AmbientFlowDerivatives, FieldsHoldThePointValues)
+{
+    for (const char* entries : flowEntries)
+    {
+        SCOPED_TRACE(entries);
+        const autoPtr<ambientFlow> flow(makeFlow(entries, box));
+        pointField points;
+        for (const point& p : randomPoints(15, 20))
+        {
+            points.append(p);
+        }
+
+        const vectorField U(flow->U(points));
+        const tensorField G(flow->gradU(points));
+        const vectorField lapU(flow->laplacianU(points));
+        const tensorField GL(flow->gradLaplacianU(points));
+        ASSERT_EQ(U.size(), 20);
+        ASSERT_EQ(G.size(), 20);
+        ASSERT_EQ(lapU.size(), 20);
+        ASSERT_EQ(GL.size(), 20);
+        forAll(points, i)
+        {
+            const ambientFlowSample s = flow->sample(points[i]);
+            EXPECT_EQ(U[i], s.U) << "point " << i;
+            EXPECT_EQ(G[i], s.gradU) << "point " << i;
+            EXPECT_EQ(lapU[i], s.laplacianU) << "point " << i;
+            EXPECT_EQ(GL[i], s.gradLaplacianU) << "point " << i;
+        }
+    }
+}

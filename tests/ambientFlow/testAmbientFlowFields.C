@@ -1,9 +1,12 @@
 // ambientFlow::writeFields on a blockMesh box: the written Uinf, gradUinf
 // and shearRateInf, read back from disk, hold the analytic values at the cell
 // centres and the boundary face centres. The meshSampled flow on such boxes:
-// exact for simple shear, converging at second order for the wavy shear.
+// exact for simple shear, converging at second order for the wavy shear,
+// bitwise the same from one and many threads, found on the boundary, and a
+// point or particle outside is an error naming it.
 #include "testAmbientFlowTools.H"
 #include "ambientFlowAdapter.H"
+#include "core/Particles.H"
 #include "Time.H"
 #include "fvMesh.H"
 #include "volFields.H"
@@ -21,6 +24,7 @@ using ambientFlowTest::contains;
 using ambientFlowTest::flowDict;
 using ambientFlowTest::ioErrorOf;
 using ambientFlowTest::makeFlow;
+using ambientFlowTest::str;
 namespace fs = std::filesystem;
 
 namespace
@@ -285,10 +289,8 @@ TEST_F(AmbientFlowFields, MeshSampledFlowIsExactForShearAndConvergesForTheWave)
         scalar eU = 0, eGradU = 0;
         for (const point& p : points)
         {
-            const suspension::FlowSample f = sampled->sample(p);
             eU = max(eU, mag(sampled->U(p) - reference.U(p)));
             eGradU = max(eGradU, mag(sampled->gradU(p) - reference.gradU(p)));
-            EXPECT_LT((f.U - toEigen(sampled->U(p))).norm(), 1e-14);
         }
         return std::pair<scalar, scalar>(eU, eGradU);
     };
@@ -316,8 +318,9 @@ TEST_F(AmbientFlowFields, MeshSampledFlowIsTheSameFromManyThreads)
 {
     // The engine samples the flow from OpenMP threads: the demand-driven
     // mesh data that the search and the interpolation use is built when
-    // the flow is made, and a fresh flow sampled at 4000 points on four
-    // threads gives bitwise what one thread gives
+    // the flow is made, and a fresh flow sampled at 4000 points (some on
+    // the box faces) on two and on four threads gives bitwise what one
+    // thread gives
     const std::unique_ptr<Time> runTime = time();
     const dictionary wave = flowDict
     (
@@ -331,26 +334,214 @@ TEST_F(AmbientFlowFields, MeshSampledFlowIsTheSameFromManyThreads)
     {
         p = point(4*u(gen), 6*u(gen), 2*u(gen));
     }
+    for (std::size_t k = 0; k < points.size(); k += 100)
+    {
+        points[k].x() = 0;
+        points[k + 1].y() = 6;
+    }
     auto sampleAll = [&](int threads)
     {
         const std::unique_ptr<fvMesh> m = mesh(*runTime, 8, 16, 8);
         const autoPtr<ambientFlow> flow(ambientFlow::New(wave, box, m.get()));
         EXPECT_TRUE(m->hasCellPoints() && m->hasPointCells());
-        std::vector<suspension::FlowSample> f(points.size());
+        std::vector<ambientFlowSample> f(points.size());
+        std::vector<char> found(points.size());
         #pragma omp parallel for schedule(dynamic, 16) num_threads(threads)
         for (std::size_t k = 0; k < points.size(); ++k)
         {
-            f[k] = flow->sample(points[k]);
+            found[k] = flow->sample(points[k], f[k]);
+        }
+        for (std::size_t k = 0; k < points.size(); ++k)
+        {
+            EXPECT_TRUE(found[k]) << "point " << k << " at " << str(points[k]);
         }
         return f;
     };
-    const std::vector<suspension::FlowSample> one = sampleAll(1);
-    const std::vector<suspension::FlowSample> four = sampleAll(4);
-    for (std::size_t k = 0; k < points.size(); ++k)
+    const std::vector<ambientFlowSample> one = sampleAll(1);
+    for (const int threads : {2, 4})
     {
-        EXPECT_EQ(one[k].U, four[k].U) << "point " << k;
-        EXPECT_EQ(one[k].gradU, four[k].gradU) << "point " << k;
-        EXPECT_EQ(one[k].laplacianU, four[k].laplacianU) << "point " << k;
-        EXPECT_EQ(one[k].gradLaplacianU, four[k].gradLaplacianU) << "point " << k;
+        SCOPED_TRACE(std::to_string(threads) + " threads");
+        const std::vector<ambientFlowSample> many = sampleAll(threads);
+        for (std::size_t k = 0; k < points.size(); ++k)
+        {
+            EXPECT_EQ(one[k].U, many[k].U) << "point " << k;
+            EXPECT_EQ(one[k].gradU, many[k].gradU) << "point " << k;
+            EXPECT_EQ(one[k].laplacianU, many[k].laplacianU) << "point " << k;
+            EXPECT_EQ(one[k].gradLaplacianU, many[k].gradLaplacianU)
+                << "point " << k;
+        }
     }
+}
+
+
+TEST_F(AmbientFlowFields, SelectedForAMeshSpanningTheBox)
+{
+    // New(mesh, dict), as another solver would call it: the box is the
+    // mesh's span, so the wave's period is the mesh height
+    const std::unique_ptr<Time> runTime = time();
+    const std::unique_ptr<fvMesh> m = mesh(*runTime, 4, 8, 2);
+    const autoPtr<ambientFlow> wave
+    (
+        ambientFlow::New
+        (
+            *m, flowDict("type wavyShear; shearRate 1; amplitude 2; periods 1;")
+        )
+    );
+    EXPECT_EQ(wave->box(), box);
+    EXPECT_DOUBLE_EQ(wave->U(point(1, 1.5, 1)).x(), 1.5 + 2);
+
+    const autoPtr<ambientFlow> sampled
+    (
+        ambientFlow::New
+        (
+            *m,
+            flowDict
+            (
+                "type meshSampled; flow { type uniformShear; shearRate 1; }"
+            )
+        )
+    );
+    EXPECT_EQ(sampled->type(), "meshSampled");
+    EXPECT_EQ(sampled->bounds(), m->bounds());
+}
+
+
+TEST_F(AmbientFlowFields, MeshSampledFlowIsFoundOnTheBoundaryOnly)
+{
+    // The box 4 x 6 x 2 is the mesh: its faces, edges and corners (within
+    // round-off) are sampled, with the values of the cell they bound; a
+    // point beyond the boundary by more than the tolerance is not, and
+    // asking for its values is a Foam::error naming the point and the mesh
+    const std::unique_ptr<Time> runTime = time();
+    const std::unique_ptr<fvMesh> m = mesh(*runTime, 4, 8, 2);
+    const autoPtr<ambientFlow> flow
+    (
+        ambientFlow::New
+        (
+            flowDict
+            (
+                "type meshSampled; flow { type wavyShear;"
+                " shearRate 1; amplitude 0.5; periods 1; }"
+            ),
+            box,
+            m.get()
+        )
+    );
+    EXPECT_EQ(flow->bounds(), m->bounds());
+
+    const scalar eps = 1e-14;
+    ambientFlowSample values;
+    for
+    (
+        const point& p :
+        {
+            point(0, 3.1, 1.3), point(4, 3.1, 1.3), point(2.2, 0, 1.3),
+            point(2.2, 6, 1.3), point(2.2, 3.1, 0), point(2.2, 3.1, 2),
+            point(0, 0, 0), point(4, 6, 2), point(-eps, 3.1, 1.3),
+            point(2.2, 6 + 4*eps, 1.3)
+        }
+    )
+    {
+        EXPECT_TRUE(flow->sample(p, values)) << "at " << str(p);
+        // Interpolated within the cell next to the face: a point just
+        // inside has nearly the same values
+        const point inside = p + 1e-9*(point(2, 3, 1) - p);
+        EXPECT_LT(mag(values.U - flow->U(inside)), 1e-6) << "at " << str(p);
+    }
+
+    const scalar diagonal = mag(m->bounds().span());
+    for
+    (
+        const point& p :
+        {
+            point(-1e-6*diagonal, 3.1, 1.3), point(2.2, 6.01, 1.3),
+            point(2.2, 3.1, -0.5), point(40, 60, 20)
+        }
+    )
+    {
+        EXPECT_FALSE(flow->sample(p, values)) << "at " << str(p);
+        try
+        {
+            flow->U(p);
+            ADD_FAILURE() << "no Foam::error for a point outside at " << str(p);
+        }
+        catch (const Foam::error& err)
+        {
+            const std::string msg = err.message();
+            EXPECT_PRED2(contains, msg, "is not known at point");
+            EXPECT_PRED2(contains, msg, "outside its bounds (0 0 0) (4 6 2)");
+        }
+    }
+}
+
+
+TEST_F(AmbientFlowFields, ParticleOutsideTheMeshStopsTheRunNamingIt)
+{
+    // The engine samples every particle (from threads), then calls
+    // sampled(): the adapter records a particle outside the mesh and there
+    // raises a Foam::error naming the first one (id, index, position) and
+    // the mesh bounds; particles inside, or on the boundary, pass
+    const std::unique_ptr<Time> runTime = time();
+    const std::unique_ptr<fvMesh> m = mesh(*runTime, 4, 8, 2);
+    const autoPtr<ambientFlow> flow
+    (
+        ambientFlow::New
+        (
+            flowDict
+            (
+                "type meshSampled; flow { type uniformShear; shearRate 1; }"
+            ),
+            box,
+            m.get()
+        )
+    );
+    const ambientFlowAdapter adapter(*flow);
+    const suspension::AmbientFlow& engine = adapter;
+
+    // Two inside (one on the corner of two faces), then two outside
+    suspension::Particles inside;
+    inside.add(suspension::Vec3(1, 2, 1), 1, 1, 10);
+    inside.add(suspension::Vec3(0, 6, 1), 1, 1, 11);
+    suspension::Particles all = inside;
+    all.add(suspension::Vec3(3, 7.5, 1), 1, 1, 12);
+    all.add(suspension::Vec3(3, -1, 1), 1, 1, 13);
+
+    auto sampleAll = [&](const suspension::Particles& p)
+    {
+        std::vector<suspension::FlowSample> f(p.size());
+        #pragma omp parallel for num_threads(2)
+        for (std::size_t i = 0; i < p.size(); ++i)
+        {
+            f[i] = engine.sample(p.x[i]);
+        }
+        return f;
+    };
+
+    // Inside: the values of simple shear; on the boundary: those of the
+    // cell it touches (interpolated with the boundary point values)
+    const std::vector<suspension::FlowSample> f = sampleAll(inside);
+    EXPECT_NO_THROW(engine.sampled(inside));
+    EXPECT_NEAR(f[0].U.x(), 2, 1e-12);
+    EXPECT_LT(mag(toFoam(f[1].U) - flow->U(point(1e-9, 6 - 1e-9, 1))), 1e-6);
+
+    // Two outside: the first is named
+    sampleAll(all);
+    try
+    {
+        engine.sampled(all);
+        ADD_FAILURE() << "no Foam::error for particles outside the mesh";
+    }
+    catch (const Foam::error& err)
+    {
+        const std::string msg = err.message();
+        EXPECT_PRED2
+        (
+            contains, msg, "particle id 12 (index 2 of 4) at (3 7.5 1)"
+        );
+        EXPECT_PRED2(contains, msg, "outside its bounds (0 0 0) (4 6 2)");
+    }
+
+    // Reported once: the next loop starts afresh
+    sampleAll(inside);
+    EXPECT_NO_THROW(engine.sampled(inside));
 }

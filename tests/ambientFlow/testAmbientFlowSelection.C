@@ -160,3 +160,70 @@ TEST(AmbientFlowSelection, ErrorsAreCatchableFoamIOerrors)
         Foam::IOerror
     );
 }
+
+
+
+TEST(AmbientFlowSelection, UnknownEntriesAreRejected)
+{
+    // A stray or misspelt entry would otherwise be ignored: each type names
+    // it, with the dictionary and the entries it knows
+    struct Case
+    {
+        std::string entries;
+        std::string stray;
+        std::string valid;
+    };
+    const Case cases[] =
+    {
+        {
+            "type uniformShear; shearRate 1; amplitude 20;",
+            "amplitude", "shearRate"
+        },
+        {
+            "type wavyShear; shearRate 1; amplitude 20; periods 1; period 2;",
+            "period", "periods"
+        },
+        {
+            "type meshSampled; flow { type uniformShear; shearRate 1; }"
+            " mesh none;",
+            "mesh", "flow"
+        },
+        {
+            "type meshSampled;"
+            " flow { type uniformShear; shearRate 1; periods 1; }",
+            "periods", "shearRate"
+        }
+    };
+    for (const Case& c : cases)
+    {
+        SCOPED_TRACE(c.entries);
+        const std::string msg = selectionError(c.entries);
+        EXPECT_PRED2(contains, msg, "Unknown entry '" + c.stray + "'");
+        EXPECT_PRED2(contains, msg, "Valid entries:");
+        EXPECT_PRED2(contains, msg, c.valid);
+        EXPECT_PRED2(contains, msg, "[dictionary ");
+        EXPECT_PRED2(contains, msg, "ambientFlow");
+    }
+}
+
+
+TEST(AmbientFlowSelection, AnalyticFlowsAreKnownEverywhere)
+{
+    const point far(-1e6, 3e6, 1e5);
+    for
+    (
+        const std::string entries :
+        {
+            "type uniformShear; shearRate 1;",
+            "type wavyShear; shearRate 1; amplitude 20; periods 1;"
+        }
+    )
+    {
+        SCOPED_TRACE(entries);
+        const autoPtr<ambientFlow> flow(makeFlow(entries, box));
+        ambientFlowSample values;
+        EXPECT_TRUE(flow->sample(far, values));
+        EXPECT_EQ(values.U, flow->U(far));
+        EXPECT_TRUE(flow->bounds().contains(far));
+    }
+}

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <omp.h>
 
+#include <atomic>
 #include <cmath>
 #include <random>
 
@@ -121,6 +122,67 @@ TEST(Simulation, ForcesAndStressBitwiseIndependentOfThreadCount)
         EXPECT_EQ(result[0].omega, result[r].omega) << r + 1 << " threads";
         EXPECT_EQ(stress[0].Sigma, stress[r].Sigma) << r + 1 << " threads";
     }
+}
+
+
+namespace
+{
+    //- Shear flow that counts its samples since the engine last called
+    //  sampled(), and records that count at each call
+    class CountingFlow
+    :
+        public ShearFlow
+    {
+    public:
+
+        using ShearFlow::ShearFlow;
+
+        mutable std::atomic<std::size_t> samples{0};
+        mutable std::vector<std::size_t> perCheck;
+
+        FlowSample sample(const Vec3& x) const override
+        {
+            ++samples;
+            return ShearFlow::sample(x);
+        }
+
+        void sampled(const Particles&) const override
+        {
+            perCheck.push_back(samples.exchange(0));
+        }
+    };
+}
+
+
+TEST(Simulation, FlowIsCheckedAfterEverySamplingLoop)
+{
+    // A flow known on part of space only (a mesh) cannot stop the run from
+    // the threads that sample it: the engine calls sampled() after every
+    // loop over the particles, each of which sampled all of them once
+    const Vec3 L(12, 12, 12);
+    LeesEdwardsBox box(L, 1.0);
+    const CountingFlow flow(1.0, 2.0, 1.0, L.y());
+    const std::size_t threshold = setParallelMinParticles(0);
+    const int threads = omp_get_max_threads();
+    omp_set_num_threads(2);
+    {
+        Simulation sim
+        (
+            randomParticles(L, 300, 1.4, 3), box, flow, allModels(), simParams()
+        );
+        sim.start(0.1);
+        for (int s = 0; s < 3; ++s) sim.step(1e-7);
+        sim.velocityFluctuation();
+    }
+    omp_set_num_threads(threads);
+    setParallelMinParticles(threshold);
+
+    EXPECT_GE(flow.perCheck.size(), 5u);
+    for (std::size_t k = 0; k < flow.perCheck.size(); ++k)
+    {
+        EXPECT_EQ(flow.perCheck[k], 300u) << "check " << k;
+    }
+    EXPECT_EQ(flow.samples, 0u) << "samples left unchecked";
 }
 
 

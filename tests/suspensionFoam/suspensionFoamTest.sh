@@ -505,6 +505,14 @@ badShearRate)
     expectInputError c suspensionProperties "shear rate"
     ;;
 
+badAmbientFlowEntry)
+    # The wave's amplitude left under uniformShear, which has none
+    newCase c
+    setEntry c $properties ambientFlow/type uniformShear
+    expectInputError c suspensionProperties "Unknown entry 'amplitude'" \
+        ambientFlow
+    ;;
+
 smallBox)
     # 3 neighbour cut-offs do not fit into the box of 30 spheres
     newCase c

@@ -1,6 +1,7 @@
 #include "ambientFlow.H"
-#include "ambientFlowAdapter.H"
 #include "volFields.H"
+
+#include <cstdlib>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -21,8 +22,39 @@ const Foam::wordList Foam::ambientFlow::fieldNames
 namespace
 {
 
-//- Write the field f(x) evaluated at the cell centres and at the boundary
-//  face centres (calculated patches) of mesh, at the mesh's current time
+//- One quantity of the flow (picked from the sample by get) at the points;
+//  a FatalError names the first point where the flow is not known
+template<class Type, class Get>
+Foam::tmp<Foam::Field<Type>> evaluate
+(
+    const Foam::ambientFlow& flow,
+    const Foam::pointField& points,
+    const Get& get
+)
+{
+    using namespace Foam;
+
+    auto tfld = tmp<Field<Type>>::New(points.size());
+    Field<Type>& fld = tfld.ref();
+    ambientFlowSample values;
+    forAll(points, i)
+    {
+        if (!flow.sample(points[i], values))
+        {
+            flow.notKnownAt
+            (
+                "point " + name(i) + " of " + name(points.size()), points[i]
+            );
+        }
+        fld[i] = get(values);
+    }
+    return tfld;
+}
+
+
+//- Write the field f(points) evaluated at the cell centres and at the
+//  boundary face centres (calculated patches) of mesh, at the mesh's
+//  current time
 template<class Type, class Function>
 void writeCellAndFaceField
 (
@@ -52,20 +84,12 @@ void writeCellAndFaceField
 
     const volVectorField& C = mesh.C();
 
-    Field<Type>& cells = fld.primitiveFieldRef();
-    forAll(cells, celli)
-    {
-        cells[celli] = f(C[celli]);
-    }
+    fld.primitiveFieldRef() = f(C.primitiveField());
 
     auto& bf = fld.boundaryFieldRef();
     forAll(bf, patchi)
     {
-        const fvPatchVectorField& Cf = C.boundaryField()[patchi];
-        forAll(Cf, facei)
-        {
-            bf[patchi][facei] = f(Cf[facei]);
-        }
+        bf[patchi] == f(C.boundaryField()[patchi]);
     }
 
     fld.write();
@@ -83,6 +107,108 @@ Foam::ambientFlow::ambientFlow(const vector& box)
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::ambientFlowSample Foam::ambientFlow::sample(const point& p) const
+{
+    ambientFlowSample values;
+    if (!sample(p, values))
+    {
+        notKnownAt("point", p);
+    }
+    return values;
+}
+
+
+Foam::vector Foam::ambientFlow::U(const point& p) const
+{
+    return sample(p).U;
+}
+
+
+Foam::tensor Foam::ambientFlow::gradU(const point& p) const
+{
+    return sample(p).gradU;
+}
+
+
+Foam::vector Foam::ambientFlow::laplacianU(const point& p) const
+{
+    return sample(p).laplacianU;
+}
+
+
+Foam::tensor Foam::ambientFlow::gradLaplacianU(const point& p) const
+{
+    return sample(p).gradLaplacianU;
+}
+
+
+Foam::boundBox Foam::ambientFlow::bounds() const
+{
+    return boundBox::greatBox;
+}
+
+
+void Foam::ambientFlow::notKnownAt(const string& what, const point& p) const
+{
+    FatalErrorInFunction
+        << "The ambientFlow " << type() << " is not known at " << what.c_str()
+        << " at " << p << ", outside its bounds " << bounds() << nl
+        << exit(FatalError);
+
+    // FatalError has thrown (throwExceptions) or exited
+    std::abort();
+}
+
+
+Foam::tmp<Foam::vectorField> Foam::ambientFlow::U
+(
+    const pointField& points
+) const
+{
+    return evaluate<vector>
+    (
+        *this, points, [](const ambientFlowSample& s) { return s.U; }
+    );
+}
+
+
+Foam::tmp<Foam::tensorField> Foam::ambientFlow::gradU
+(
+    const pointField& points
+) const
+{
+    return evaluate<tensor>
+    (
+        *this, points, [](const ambientFlowSample& s) { return s.gradU; }
+    );
+}
+
+
+Foam::tmp<Foam::vectorField> Foam::ambientFlow::laplacianU
+(
+    const pointField& points
+) const
+{
+    return evaluate<vector>
+    (
+        *this, points, [](const ambientFlowSample& s) { return s.laplacianU; }
+    );
+}
+
+
+Foam::tmp<Foam::tensorField> Foam::ambientFlow::gradLaplacianU
+(
+    const pointField& points
+) const
+{
+    return evaluate<tensor>
+    (
+        *this, points,
+        [](const ambientFlowSample& s) { return s.gradLaplacianU; }
+    );
+}
+
 
 Foam::symmTensor Foam::ambientFlow::E(const point& p) const
 {
@@ -114,7 +240,7 @@ void Foam::ambientFlow::writeFields
         writeCellAndFaceField<vector>
         (
             mesh, "Uinf", dimVelocity,
-            [this](const point& p) { return U(p); }
+            [this](const pointField& p) { return U(p); }
         );
     }
     if (names.found("gradUinf"))
@@ -122,7 +248,7 @@ void Foam::ambientFlow::writeFields
         writeCellAndFaceField<tensor>
         (
             mesh, "gradUinf", dimless/dimTime,
-            [this](const point& p) { return gradU(p); }
+            [this](const pointField& p) { return gradU(p); }
         );
     }
     if (names.found("shearRateInf"))
@@ -130,20 +256,9 @@ void Foam::ambientFlow::writeFields
         writeCellAndFaceField<scalar>
         (
             mesh, "shearRateInf", dimless/dimTime,
-            [this](const point& p) { return localShearRate(p); }
+            [this](const pointField& p) { return gradU(p)().component(tensor::YX); }
         );
     }
-}
-
-
-suspension::FlowSample Foam::ambientFlow::sample(const point& p) const
-{
-    suspension::FlowSample f;
-    f.U = toEigen(U(p));
-    f.gradU = toEigen(gradU(p));
-    f.laplacianU = toEigen(laplacianU(p));
-    f.gradLaplacianU = toEigen(gradLaplacianU(p));
-    return f;
 }
 
 

@@ -1,4 +1,5 @@
 #include "ambientFlow.H"
+#include "fvMesh.H"
 
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
 
@@ -27,6 +28,16 @@ Foam::autoPtr<Foam::ambientFlow> Foam::ambientFlow::New
     }
 
     return cstrIter()(dict, box, mesh);
+}
+
+
+Foam::autoPtr<Foam::ambientFlow> Foam::ambientFlow::New
+(
+    const fvMesh& mesh,
+    const dictionary& dict
+)
+{
+    return New(dict, mesh.bounds().span(), &mesh);
 }
 
 

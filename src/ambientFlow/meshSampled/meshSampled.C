@@ -1,8 +1,10 @@
 #include "meshSampled.H"
-#include "ambientFlowAdapter.H"
+#include "inputChecks.H"
 #include "addToRunTimeSelectionTable.H"
 #include "fvcGrad.H"
 #include "fvcLaplacian.H"
+#include "indexedOctree.H"
+#include "treeDataCell.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -12,8 +14,23 @@ namespace Foam
     addToRunTimeSelectionTable(ambientFlow, meshSampled, dictionary);
 }
 
+const Foam::scalar Foam::meshSampled::boundaryTolerance = 1e-9;
+
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::autoPtr<Foam::ambientFlow> Foam::meshSampled::readFlow
+(
+    const dictionary& dict,
+    const vector& box,
+    const fvMesh* mesh
+)
+{
+    checkEntries(dict, {"type", "flow"});
+
+    return ambientFlow::New(dict.subDict("flow"), box, mesh);
+}
+
 
 const Foam::fvMesh& Foam::meshSampled::requireMesh
 (
@@ -56,18 +73,10 @@ Foam::tmp<Foam::volVectorField> Foam::meshSampled::sampled
     );
     volVectorField& U = tU.ref();
     const volVectorField& C = mesh.C();
-    forAll(C, celli)
-    {
-        U[celli] = flow.U(C[celli]);
-    }
+    U.primitiveFieldRef() = flow.U(C.primitiveField());
     forAll(U.boundaryField(), patchi)
     {
-        fvPatchVectorField& Up = U.boundaryFieldRef()[patchi];
-        const fvPatchVectorField& Cp = C.boundaryField()[patchi];
-        forAll(Up, facei)
-        {
-            Up[facei] = flow.U(Cp[facei]);
-        }
+        U.boundaryFieldRef()[patchi] == flow.U(C.boundaryField()[patchi]);
     }
     return tU;
 }
@@ -76,7 +85,25 @@ Foam::tmp<Foam::volVectorField> Foam::meshSampled::sampled
 Foam::label Foam::meshSampled::cell(const point& p) const
 {
     const label celli = mesh_.findCell(p);
-    return celli >= 0 ? celli : mesh_.findNearestCell(p);
+    if (celli >= 0)
+    {
+        return celli;
+    }
+
+    // Not inside any cell's tets: p may be on the boundary (a particle on a
+    // face of the Lees-Edwards box, within round-off). It belongs to the
+    // nearest cell if p moved towards that cell's centre by tolerance_ is in
+    // it; otherwise it is outside the mesh.
+    const label nearest =
+        mesh_.cellTree().findNearest(p, magSqr(mesh_.bounds().span())).index();
+    if (nearest < 0)
+    {
+        return -1;
+    }
+    const vector d = mesh_.cellCentres()[nearest] - p;
+    const scalar dist = mag(d);
+    const point q = p + min(scalar(1), tolerance_/(dist + VSMALL))*d;
+    return mesh_.pointInCell(q, nearest) ? nearest : -1;
 }
 
 
@@ -90,7 +117,7 @@ Foam::meshSampled::meshSampled
 )
 :
     ambientFlow(box),
-    flow_(ambientFlow::New(dict.subDict("flow"), box, mesh)),
+    flow_(readFlow(dict, box, mesh)),
     mesh_(requireMesh(dict, mesh)),
     U_(sampled(mesh_, flow_())),
     gradU_(fvc::grad(U_)),
@@ -99,7 +126,8 @@ Foam::meshSampled::meshSampled
     interpolateU_(U_),
     interpolateGradU_(gradU_),
     interpolateLaplacianU_(laplacianU_),
-    interpolateGradLaplacianU_(gradLaplacianU_)
+    interpolateGradLaplacianU_(gradLaplacianU_),
+    tolerance_(boundaryTolerance*mag(mesh_.bounds().span()))
 {
     // Build now what the cell search and the cell-point interpolation
     // build on first use (OpenFOAM's demand-driven mesh data): the engine
@@ -118,39 +146,22 @@ Foam::meshSampled::meshSampled
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::vector Foam::meshSampled::U(const point& p) const
-{
-    return interpolateU_.interpolate(p, cell(p));
-}
-
-
-Foam::tensor Foam::meshSampled::gradU(const point& p) const
-{
-    return interpolateGradU_.interpolate(p, cell(p));
-}
-
-
-Foam::vector Foam::meshSampled::laplacianU(const point& p) const
-{
-    return interpolateLaplacianU_.interpolate(p, cell(p));
-}
-
-
-Foam::tensor Foam::meshSampled::gradLaplacianU(const point& p) const
-{
-    return interpolateGradLaplacianU_.interpolate(p, cell(p));
-}
-
-
-suspension::FlowSample Foam::meshSampled::sample(const point& p) const
+bool Foam::meshSampled::sample
+(
+    const point& p,
+    ambientFlowSample& values
+) const
 {
     const label celli = cell(p);
-    suspension::FlowSample f;
-    f.U = toEigen(interpolateU_.interpolate(p, celli));
-    f.gradU = toEigen(interpolateGradU_.interpolate(p, celli));
-    f.laplacianU = toEigen(interpolateLaplacianU_.interpolate(p, celli));
-    f.gradLaplacianU = toEigen(interpolateGradLaplacianU_.interpolate(p, celli));
-    return f;
+    if (celli < 0)
+    {
+        return false;
+    }
+    values.U = interpolateU_.interpolate(p, celli);
+    values.gradU = interpolateGradU_.interpolate(p, celli);
+    values.laplacianU = interpolateLaplacianU_.interpolate(p, celli);
+    values.gradLaplacianU = interpolateGradLaplacianU_.interpolate(p, celli);
+    return true;
 }
 
 
@@ -163,6 +174,12 @@ Foam::scalar Foam::meshSampled::shearRate() const
 Foam::scalar Foam::meshSampled::maxVelocityGradient() const
 {
     return flow_->maxVelocityGradient();
+}
+
+
+Foam::boundBox Foam::meshSampled::bounds() const
+{
+    return mesh_.bounds();
 }
 
 

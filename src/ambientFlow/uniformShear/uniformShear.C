@@ -1,6 +1,8 @@
 #include "uniformShear.H"
 #include "ambientFlowAdapter.H"
+#include "inputChecks.H"
 #include "addToRunTimeSelectionTable.H"
+#include "flow/ShearFlow.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -11,12 +13,28 @@ namespace Foam
 }
 
 
-// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
-suspension::FlowSample Foam::uniformShear::sample(const point& p) const
+namespace
 {
-    return flow_.sample(toEigen(p));
+
+//- Read and check the entries of simple shear
+std::unique_ptr<const suspension::ShearFlow> readUniformShear
+(
+    const Foam::dictionary& dict
+)
+{
+    using namespace Foam;
+
+    checkEntries(dict, {"type", "shearRate"});
+
+    return std::make_unique<const suspension::ShearFlow>
+    (
+        getScalarIn(dict, "shearRate", interval::open(-GREAT, GREAT))
+    );
 }
+
+} // End anonymous namespace
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -24,11 +42,11 @@ suspension::FlowSample Foam::uniformShear::sample(const point& p) const
 Foam::uniformShear::uniformShear
 (
     const vector& box,
-    const suspension::ShearFlow& flow
+    std::unique_ptr<const suspension::ShearFlow> flow
 )
 :
     ambientFlow(box),
-    flow_(flow)
+    flow_(std::move(flow))
 {}
 
 
@@ -39,45 +57,37 @@ Foam::uniformShear::uniformShear
     const fvMesh*
 )
 :
-    uniformShear(box, suspension::ShearFlow(dict.get<scalar>("shearRate")))
+    uniformShear(box, readUniformShear(dict))
 {}
+
+
+// * * * * * * * * * * * * * * * * Destructor  * * * * * * * * * * * * * * * //
+
+Foam::uniformShear::~uniformShear() = default;
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::vector Foam::uniformShear::U(const point& p) const
+bool Foam::uniformShear::sample
+(
+    const point& p,
+    ambientFlowSample& values
+) const
 {
-    return toFoam(sample(p).U);
-}
-
-
-Foam::tensor Foam::uniformShear::gradU(const point& p) const
-{
-    return toFoam(sample(p).gradU);
-}
-
-
-Foam::vector Foam::uniformShear::laplacianU(const point& p) const
-{
-    return toFoam(sample(p).laplacianU);
-}
-
-
-Foam::tensor Foam::uniformShear::gradLaplacianU(const point& p) const
-{
-    return toFoam(sample(p).gradLaplacianU);
+    values = toFoam(flow_->sample(toEigen(p)));
+    return true;
 }
 
 
 Foam::scalar Foam::uniformShear::shearRate() const
 {
-    return flow_.shearRate();
+    return flow_->shearRate();
 }
 
 
 Foam::scalar Foam::uniformShear::maxVelocityGradient() const
 {
-    return flow_.maxVelocityGradient();
+    return flow_->maxVelocityGradient();
 }
 
 

@@ -1,5 +1,7 @@
 #include "wavyShear.H"
+#include "inputChecks.H"
 #include "addToRunTimeSelectionTable.H"
+#include "flow/ShearFlow.H"
 
 #include <cmath>
 
@@ -18,7 +20,7 @@ namespace
 {
 
 //- Read and check the entries of eq. (17); Ly is the y edge of the box
-suspension::ShearFlow readWavyShear
+std::unique_ptr<const suspension::ShearFlow> readWavyShear
 (
     const Foam::dictionary& dict,
     const Foam::vector& box
@@ -26,8 +28,11 @@ suspension::ShearFlow readWavyShear
 {
     using namespace Foam;
 
-    const scalar gammaDot = dict.get<scalar>("shearRate");
-    const scalar amplitude = dict.get<scalar>("amplitude");
+    checkEntries(dict, {"type", "shearRate", "amplitude", "periods"});
+
+    const interval finite = interval::open(-GREAT, GREAT);
+    const scalar gammaDot = getScalarIn(dict, "shearRate", finite);
+    const scalar amplitude = getScalarIn(dict, "amplitude", finite);
     const scalar n = dict.get<scalar>("periods");
 
     if (n < 1 || n != std::round(n))
@@ -49,7 +54,10 @@ suspension::ShearFlow readWavyShear
             << exit(FatalIOError);
     }
 
-    return suspension::ShearFlow(gammaDot, amplitude, n, Ly);
+    return std::make_unique<const suspension::ShearFlow>
+    (
+        gammaDot, amplitude, n, Ly
+    );
 }
 
 } // End anonymous namespace

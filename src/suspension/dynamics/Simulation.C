@@ -292,6 +292,7 @@ double Simulation::velocityFluctuation() const
     {
         sum += (p.u[i] - flow_.sample(p.x[i]).U).squaredNorm();
     }
+    flow_.sampled(p);
     return p.size() ? sum/p.size() : 0;
 }
 

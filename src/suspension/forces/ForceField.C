@@ -656,6 +656,7 @@ ForceSummary ForceField::run
                 if (out.S) (*out.S)[i] = Si;
             }
         }
+        flow.sampled(p);
     }
 
     // The pair passes, compiled for the models that are on
