@@ -26,7 +26,7 @@ int main(int argc, char *argv[])
         IOobject("suspensionProperties", runTime.constant(), mesh, IOobject::MUST_READ)
     );
     const autoPtr<ambientFlow> flow =
-        ambientFlow::New(properties.subDict("ambientFlow"), mesh.bounds().span(), &mesh);
+        ambientFlow::New(mesh, properties.subDict("ambientFlow"));
     Info<< "userSolver: U at the centre " << flow->U(mesh.bounds().centre()) << endl;
 
     suspensionCloud particles(runTime, mesh);

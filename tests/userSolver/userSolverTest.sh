@@ -29,5 +29,8 @@ blockMesh > "$work/log.blockMesh" 2>&1 || fail blockMesh
 "$work/bin/userSolver" > "$work/log.userSolver" 2>&1 || fail "userSolver run"
 grep -q "^userSolver: U at the centre (" "$work/log.userSolver" || fail "no flow sample in the log"
 grep -q "^End" "$work/log.userSolver" || fail "no End"
+# the case's function objects ran on the cloud of this solver too
+[ "$(grep -vc '^#' postProcessing/rheology/0/rheology.dat)" -eq 4 ] \
+    || fail "rheology.dat of the function object: not 4 rows"
 ls 0.004/lagrangian/suspension/positions > /dev/null 2>&1 || fail "no cloud written at the end time 0.004"
 echo "userSolver: built with wmake, ran and wrote the cloud"
