@@ -182,7 +182,8 @@ SteadyState::SteadyState
 double SteadyState::strainNeeded(const double p) const
 {
     const double enoughBlocks = minBlocks_*std::max(blockStrain(), correlationStrain());
-    if (!(standardError_ >= 0) || nBlocks_ < 2 || mean_ == 0)
+    // (no ordered comparison with a NaN: OpenFOAM traps the FE_INVALID)
+    if (nBlocks_ < 2 || std::isnan(standardError_) || mean_ == 0)
     {
         return std::max(enoughBlocks, 2*strainUsed());
     }

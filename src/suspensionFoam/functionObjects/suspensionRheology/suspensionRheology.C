@@ -1,6 +1,11 @@
 #include "suspensionRheology.H"
+#include "rheologySeries.H"
 #include "suspensionCloud.H"
+#include "stress/SteadyState.H"
 #include "addToRunTimeSelectionTable.H"
+
+#include <iomanip>
+#include <sstream>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -58,6 +63,127 @@ void Foam::functionObjects::suspensionRheology::writeFileHeader
 }
 
 
+bool Foam::functionObjects::suspensionRheology::summarise(const bool report)
+{
+    file().flush();
+    const rheologySeries series(baseFileDir()/name(), time_.value());
+    if (series.size() < 2)
+    {
+        return false;
+    }
+    const std::vector<double>& strain = series.column("strain");
+
+    // One steady window for every quantity: the transient of etaR
+    suspension::SteadyState::Options opt;
+    if (discardStrain_ >= 0)
+    {
+        opt.discardStrain = discardStrain_;
+    }
+    else
+    {
+        const std::size_t d = suspension::SteadyState::mserTruncation
+        (
+            series.column("etaR"), opt.batch
+        );
+        opt.discardStrain = strain[std::min(d, strain.size() - 1)] - strain[0];
+    }
+
+    wordList quantities({"etaR", "N1", "N2", "Pi"});
+    for (const word& n : series.names())
+    {
+        if (n.starts_with("etaR_"))
+        {
+            quantities.append(n);
+        }
+    }
+
+    const suspension::SteadyState etaR(strain, series.column("etaR"), opt);
+    const scalar relError =
+        etaR.nBlocks() > 1 && etaR.mean() != 0
+      ? etaR.standardError()/mag(etaR.mean())
+      : GREAT;
+    const bool precise = etaR.reliable() && relError <= precision_;
+
+    std::ostringstream table;
+    table
+        << std::left << std::setw(20) << "# quantity" << std::right
+        << std::setw(14) << "mean" << std::setw(14) << "stdError"
+        << std::setw(10) << "relError" << std::setw(18) << "correlationStrain"
+        << std::setw(12) << "blockStrain" << std::setw(8) << "blocks"
+        << std::setw(12) << "strainUsed" << std::setw(16) << "strainDiscarded"
+        << std::setw(9) << "trusted" << '\n';
+    for (const word& q : quantities)
+    {
+        const suspension::SteadyState st(strain, series.column(q), opt);
+        table
+            << std::left << std::setw(20) << ("  " + q) << std::right
+            << std::setprecision(6)
+            << std::setw(14) << st.mean()
+            << std::setw(14) << st.standardError()
+            << std::setprecision(3) << std::setw(10)
+            << (st.mean() != 0 ? st.standardError()/std::abs(st.mean()) : 0.0)
+            << std::setprecision(4)
+            << std::setw(18) << st.correlationStrain()
+            << std::setw(12) << st.blockStrain()
+            << std::setw(8) << st.nBlocks()
+            << std::setw(12) << st.strainUsed()
+            << std::setw(16) << st.strainDiscarded()
+            << std::setw(9) << (st.reliable() ? "yes" : "no") << '\n';
+    }
+
+    std::ostringstream verdict;
+    verdict
+        << "etaR = " << std::setprecision(6) << etaR.mean() << " +/- "
+        << etaR.standardError() << " (" << std::setprecision(3)
+        << 100*relError << " %, " << etaR.nBlocks() << " blocks of "
+        << std::setprecision(4) << etaR.blockStrain() << " strain)";
+    if (precise)
+    {
+        verdict << ": within the precision " << 100*precision_ << " %";
+    }
+    else
+    {
+        verdict
+            << (etaR.reliable() ? ": above" : ": too few blocks to trust; for")
+            << " the precision " << 100*precision_ << " % about "
+            << std::max(0.0, etaR.strainNeeded(precision_) - etaR.strainUsed())
+            << " more steady strain is needed";
+    }
+
+    // Next to this run's rheology.dat
+    const fileName summaryFile
+    (
+        baseFileDir()/name()/time_.timeName(time_.startTime().value())
+       /"rheologySummary.dat"
+    );
+    {
+        OFstream os(summaryFile);
+        os  << "# Steady-state rheology at time " << time_.timeName()
+            << " (strain " << strain.back() << "), from " << series.size()
+            << " rows of postProcessing/" << name()
+            << "/*/rheology*.dat" << nl
+            << "# start-up transient: "
+            << (discardStrain_ >= 0 ? "discardStrain" : "MSER-5 rule on etaR")
+            << ", strain " << strain.front() << " to "
+            << strain.front() + opt.discardStrain << " discarded" << nl
+            << "# error bars: means of blocks of two correlation strains,"
+            << " trusted with >= " << label(opt.minBlocks) << " blocks" << nl
+            << "# " << verdict.str().c_str() << nl
+            << table.str().c_str();
+    }
+    if (report)
+    {
+        Info<< nl << type() << ' ' << name() << ": steady state from strain "
+            << strain.front() + opt.discardStrain << " to " << strain.back()
+            << nl << table.str().c_str()
+            << verdict.str().c_str() << nl
+            << "(" << summaryFile << ")" << nl
+            << endl;
+    }
+    return precise;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::functionObjects::suspensionRheology::suspensionRheology
@@ -69,7 +195,11 @@ Foam::functionObjects::suspensionRheology::suspensionRheology
 :
     fvMeshFunctionObject(name, runTime, dict),
     writeFile(mesh_, name, "rheology", dict),
-    contributions_()
+    contributions_(),
+    precision_(0.02),
+    stopAtPrecision_(false),
+    discardStrain_(-1),
+    summarised_(false)
 {
     read(dict);
     writeFileHeader
@@ -92,6 +222,25 @@ bool Foam::functionObjects::suspensionRheology::read(const dictionary& dict)
     forAll(valid, c)
     {
         valid[c] = names[c];
+    }
+
+    precision_ = dict.getOrDefault<scalar>("precision", 0.02);
+    if (!(precision_ > 0 && precision_ < 1))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'precision' " << precision_ << " of function object "
+            << this->name() << " is not in (0, 1): it is the wanted standard"
+            << " error of etaR relative to etaR" << nl << exit(FatalIOError);
+    }
+    stopAtPrecision_ = dict.getOrDefault<bool>("stopAtPrecision", false);
+    discardStrain_ = dict.getOrDefault<scalar>("discardStrain", -1);
+    if (dict.found("discardStrain") && !(discardStrain_ >= 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'discardStrain' " << discardStrain_
+            << " of function object " << this->name() << " is negative:"
+            << " give the start-up strain to discard, or leave it out for"
+            << " the MSER-5 rule" << nl << exit(FatalIOError);
     }
 
     const wordList selected(dict.getOrDefault<wordList>("contributions", valid));
@@ -149,6 +298,31 @@ bool Foam::functionObjects::suspensionRheology::write()
     }
     os  << endl;
 
+    if (time_.writeTime())
+    {
+        const bool precise = summarise(false);
+        if (stopAtPrecision_ && precise)
+        {
+            Info<< nl << type() << ' ' << name() << ": etaR within the"
+                << " precision " << precision_ << " at time "
+                << time_.timeName() << ": writing and ending the run"
+                << " (stopAtPrecision)" << endl;
+            summarise(true);
+            summarised_ = true;
+            const_cast<Time&>(time_).writeAndEnd();
+        }
+    }
+    return true;
+}
+
+
+bool Foam::functionObjects::suspensionRheology::end()
+{
+    if (!summarised_)
+    {
+        summarise(true);
+        summarised_ = true;
+    }
     return true;
 }
 
