@@ -26,7 +26,13 @@
 #   outputEntry the output entries of earlier versions in
 #               suspensionProperties are an error naming the function objects
 #   restart     a run restarted from a written time matches the
-#               uninterrupted run bitwise (2 threads, contacts with history)
+#               uninterrupted run bitwise (2 threads, contacts with history),
+#               and so does its steady-state summary (rheologySummary.dat)
+#   stopAtPrecision
+#               the run ends at the first write time at which etaR is
+#               trusted within the precision, writing its state
+#   badPrecision
+#               a precision outside (0, 1) is a FatalIOError naming it
 #   implicitRun the implicitEuler and overdamped integrators: contacts set
 #               the step, CG statistics in the log and in rheology.dat
 #   implicitRestart
@@ -169,6 +175,10 @@ expectExactRestart()
 
     mkdir "$b"
     cp -r "$a/constant" "$a/system" "$a/0" "$a/0.05" "$b"
+    # what a run stopped at 0.05 had written of the rheology
+    mkdir -p "$b/postProcessing/rheology/0"
+    awk '/^#/ || $1 <= 0.05' "$a/postProcessing/rheology/0/rheology.dat" \
+        > "$b/postProcessing/rheology/0/rheology.dat"
     (cd "$b" && wavyShearFoam > log.wavyShearFoam 2>&1) \
         || fail "restarted run $1"
     grep -q "stored suspension" "$b/log.wavyShearFoam" \
@@ -187,6 +197,11 @@ expectExactRestart()
             "$a/postProcessing/rheology/0/rheology.dat") \
          <(awk '!/^#/' "$b/postProcessing/rheology/0.05/rheology.dat") \
         > /dev/null || fail "$1: rheology.dat rows differ"
+    # and the steady-state summary covers the whole history: the same
+    summary=postProcessing/rheology/0/rheologySummary.dat
+    grep -q "from 10 rows" "$a/$summary" || fail "$1: summary not of 10 rows"
+    cmp "$a/$summary" "$b/postProcessing/rheology/0.05/rheologySummary.dat" \
+        >&2 || fail "$1: the restarted run's summary differs"
 }
 
 # Rewrite the groups of case $1 in SI units (units dimensional) for
@@ -601,6 +616,56 @@ referenceOutput)
         n=$((n + 1))
     done < <(cd "$reference" && find . -type f | sed 's|^\./||' | sort)
     [ "$n" -eq 14 ] || fail "$n reference files, expected 14"
+    ;;
+
+stopAtPrecision)
+    # Implicit, frictionless, sampled every 0.002, summarised every 0.05:
+    # with stopAtPrecision the run ends at the first write time at which
+    # etaR's error bar is trusted and within the precision, writing its
+    # state; the same run ended one write time earlier is not yet precise
+    newCase c
+    setEntry c $properties integration/integrator implicitEuler
+    setEntry c $properties contact/friction 0
+    setEntry c $control endTime 2
+    setEntry c $control deltaT 0.002
+    setEntry c $control writeInterval 25
+    setEntry c $control functions/rheology/precision 0.02
+    setEntry c $control functions/rheology/minSteadyStrain 0.05
+    setEntry c $control functions/rheology/stopAtPrecision true
+    cp -r "$work/c" "$work/d"
+    runCase c
+    log="$work/c/log.wavyShearFoam"
+    grep -q "(stopAtPrecision)" "$log" || fail "the run did not stop at precision"
+    stop=$(sed -n 's/.*within the precision 0.02 at time \([0-9.e-]*\):.*/\1/p' "$log")
+    [ -n "$stop" ] && awk -v t="$stop" 'BEGIN { exit !(t < 2) }' \
+        || fail "stopped at '$stop', not before the end time 2"
+    [ -f "$work/c/$stop/lagrangian/suspension/positions" ] \
+        || fail "no state written at the stop time $stop"
+    summary="$work/c/postProcessing/rheology/0/rheologySummary.dat"
+    awk '$1 == "etaR" { ok = ($4 <= 0.02 && $10 == "yes") } END { exit !ok }' \
+        "$summary" || fail "the summary at the stop is not trusted within 0.02"
+    # One write interval (0.05) earlier: not precise yet
+    before=$(awk -v t="$stop" 'BEGIN { printf "%g", t - 0.05 }')
+    setEntry d $control endTime "$before"
+    setEntry d $control functions/rheology/stopAtPrecision false
+    runCase d
+    grep -q "(stopAtPrecision)" "$work/d/log.wavyShearFoam" && fail "d stopped"
+    awk '$1 == "etaR" { ok = ($4 <= 0.02 && $10 == "yes") } END { exit ok }' \
+        "$work/d/postProcessing/rheology/0/rheologySummary.dat" \
+        || fail "already precise at $before, one write time before the stop"
+    ;;
+
+badPrecision)
+    newCase c
+    setEntry c $control functions/rheology/precision 2
+    (cd "$work/c" && wavyShearFoam > log.wavyShearFoam 2>&1) \
+        && fail "wavyShearFoam accepted precision 2"
+    log="$work/c/log.wavyShearFoam"
+    grep -q "FOAM FATAL IO ERROR" "$log" || fail "no FatalIOError"
+    grep -qF "Entry 'precision' 2 of function object rheology is not in (0, 1)" \
+        "$log" || fail "the error does not name the entry and its range"
+    grep -q "controlDict.functions.rheology" "$log" || fail "no file named"
+    grep -q "^strain " "$log" && fail "time steps were taken"
     ;;
 
 functionObjectsOff)

@@ -108,7 +108,8 @@ SteadyState::SteadyState
     const Options& opt
 )
 :
-    minBlocks_(opt.minBlocks)
+    minBlocks_(opt.minBlocks),
+    minStrain_(opt.minStrain)
 {
     if (strain.size() != values.size())
     {
@@ -181,7 +182,11 @@ SteadyState::SteadyState
 
 double SteadyState::strainNeeded(const double p) const
 {
-    const double enoughBlocks = minBlocks_*std::max(blockStrain(), correlationStrain());
+    const double enoughBlocks = std::max
+    (
+        minBlocks_*std::max(blockStrain(), correlationStrain()),
+        minStrain_
+    );
     // (no ordered comparison with a NaN: OpenFOAM traps the FE_INVALID)
     if (nBlocks_ < 2 || std::isnan(standardError_) || mean_ == 0)
     {

@@ -75,6 +75,7 @@ bool Foam::functionObjects::suspensionRheology::summarise(const bool report)
 
     // One steady window for every quantity: the transient of etaR
     suspension::SteadyState::Options opt;
+    opt.minStrain = minSteadyStrain_;
     if (discardStrain_ >= 0)
     {
         opt.discardStrain = discardStrain_;
@@ -167,7 +168,8 @@ bool Foam::functionObjects::suspensionRheology::summarise(const bool report)
             << ", strain " << strain.front() << " to "
             << strain.front() + opt.discardStrain << " discarded" << nl
             << "# error bars: means of blocks of two correlation strains,"
-            << " trusted with >= " << label(opt.minBlocks) << " blocks" << nl
+            << " trusted with >= " << label(opt.minBlocks) << " blocks over"
+            << " >= " << minSteadyStrain_ << " strain" << nl
             << "# " << verdict.str().c_str() << nl
             << table.str().c_str();
     }
@@ -199,6 +201,7 @@ Foam::functionObjects::suspensionRheology::suspensionRheology
     precision_(0.02),
     stopAtPrecision_(false),
     discardStrain_(-1),
+    minSteadyStrain_(1),
     summarised_(false)
 {
     read(dict);
@@ -241,6 +244,15 @@ bool Foam::functionObjects::suspensionRheology::read(const dictionary& dict)
             << " of function object " << this->name() << " is negative:"
             << " give the start-up strain to discard, or leave it out for"
             << " the MSER-5 rule" << nl << exit(FatalIOError);
+    }
+
+    minSteadyStrain_ = dict.getOrDefault<scalar>("minSteadyStrain", 1);
+    if (!(minSteadyStrain_ >= 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'minSteadyStrain' " << minSteadyStrain_
+            << " of function object " << this->name() << " is negative"
+            << nl << exit(FatalIOError);
     }
 
     const wordList selected(dict.getOrDefault<wordList>("contributions", valid));
