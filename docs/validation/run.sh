@@ -100,7 +100,7 @@ wavy()
     local t
     for t in NW YW; do
         point wavy "$t-N$N" wavyShear/$t $end 0.01 population/nParticles=$N \
-            electroChemical/attraction/cutoff=0.5 output/profileBins=16 || failed=1
+            electroChemical/attraction/cutoffGap=0.5 output/profileBins=16 || failed=1
     done
 }
 
