@@ -333,7 +333,17 @@ TEST(SizeDistribution, DiscreteTrimodalAtEqualVolumes)
         }
     }
 
-    // N = 2000: within one particle of each class; n ~ 1 : 1.5^-3 : 2^-3
+    // N = 2000 and 300: within one particle of the largest radius (the
+    // coarsest step); n ~ 1 : 1.5^-3 : 2^-3
+    for (std::size_t N : {300u, 2000u})
+    {
+        const std::vector<double> r = d.radii(N);
+        for (std::size_t k = 0; k < 3; ++k)
+        {
+            EXPECT_NEAR(volumeShare(r, a[k]), v[k], sphereVolume(2)/solidVolume(r))
+                << "N = " << N << ", a = " << a[k];
+        }
+    }
     const std::vector<double> r = d.radii(2000);
     for (std::size_t k = 0; k < 3; ++k)
     {
