@@ -112,7 +112,8 @@ void Foam::suspensionCloud::checkSetup(const scalar aMax) const
     // The one box rule of the run and the packing
     const suspension::BoxRule rule = properties_.boxRule();
     const string hint =
-        "Raise population/nParticles, or shorten the interaction ranges"
+        "Raise population/nParticles (a radius file: give more radii, or"
+        " lower population/volumeFraction), or shorten the interaction ranges"
         " (lubrication/delta, electroChemical repulsion/cutoffDebyeLengths"
         " and attraction/cutoffGap, integration/skin)";
     if (!restart_)
