@@ -386,7 +386,7 @@ TEST(SizeDistribution, DiscreteAndListRejectBadInput)
     expectThrow<E>([]{ SizeDistribution::discrete({1, 2}, {0, 1}, F::number); }, "number fraction = 0");
     expectThrow<E>([]{ SizeDistribution::discrete({1, 2}, {0.5, 0.4}, F::volume); }, "sum to 0.9, not to 1");
     expectThrow<E>([]{ SizeDistribution::discrete({1, 0}, {0.5, 0.5}, F::volume); }, "radius = 0");
-    expectThrow<E>([]{ SizeDistribution::discrete({1, 1}, {0.5, 0.5}, F::volume); }, "repeated radius = 1");
+    expectThrow<E>([]{ SizeDistribution::discrete({1, 1}, {0.5, 0.5}, F::volume); }, "radius 1 is given twice");
     expectThrow<E>([]{ SizeDistribution::discrete({1, 2}, {1}, F::volume); }, "2 radii but 1 volume fraction");
     expectThrow<E>([]{ SizeDistribution::discrete({}, {}, F::volume); }, "number of radii = 0");
     expectThrow<E>([]{ SizeDistribution::discrete({1, 2, 3}, {0.2, 0.3, 0.5}, F::volume).radii(2); }, "N = 2");

@@ -597,6 +597,12 @@ badFractionSum)
     expectInputError c suspensionProperties "numberFractions" "sums to 0.9"
     ;;
 
+bothFractions)
+    newCase c
+    trimodal c "(0.3 0.3 0.4); numberFractions (0.3 0.3 0.4)" volumeFractions
+    expectInputError c suspensionProperties "exactly one of the entries 'volumeFractions' and 'numberFractions'"
+    ;;
+
 badFractionCount)
     newCase c
     trimodal c "(0.5 0.5)" volumeFractions

@@ -158,7 +158,10 @@ SizeDistribution SizeDistribution::discrete
     {
         if (!d.classRadii_.empty() && radii[k] == d.classRadii_.back())
         {
-            throwOutOfRange(model, "repeated radius", radii[k], "distinct radii");
+            std::ostringstream msg;
+            msg << model << ": radius " << radii[k] << " is given twice;"
+                << " the radii of a discrete distribution must be distinct";
+            throw std::invalid_argument(msg.str());
         }
         const double a = radii[k];
         const double v =
