@@ -101,7 +101,7 @@ wavy()
     for t in NW YW; do
         WSF_CASE_SETUP="setEntry system/controlDict functions/profiles/nBins 16" \
             point wavy "$t-N$N" wavyShear/$t $end 0.01 population/nParticles=$N \
-            electroChemical/attraction/cutoff=0.5 || failed=1
+            electroChemical/attraction/cutoffGap=0.5 || failed=1
     done
 }
 

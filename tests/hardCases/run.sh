@@ -107,7 +107,7 @@ reversingShear()
     # shear rate 1 + 20 (2 pi/Ly) cos(2 pi y/Ly) changes sign; 1024 spheres
     # with the attraction cut at 0.5 a0 (the box holds 3 cut-offs)
     hard reversingShear wavyShear/YW "$(strain 0.1)" population/nParticles=1024 \
-        electroChemical/attraction/cutoff=0.5
+        electroChemical/attraction/cutoffGap=0.5
 }
 overlappingStart()
 {

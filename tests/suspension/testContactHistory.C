@@ -92,6 +92,7 @@ TEST(ContactHistory, CarriedThroughEveryRebuildOfAShearedRun)
     RandomPacking::Params pack;
     pack.phi = 0.45;
     pack.seed = 4;
+    pack.reach = 0.1;       // the run's: contacts only (gap 0), skin 0.1
     RandomPacking::Result packed = RandomPacking(pack).pack(radii, rho);
     Particles& p = packed.particles;
     LeesEdwardsBox box(packed.box.L(), 1.0);

@@ -149,10 +149,10 @@ TEST(Repulsion, RejectsBadParams)
         []
         {
             ElectrostaticRepulsion::Params p = repulsionParams(1, 0.02);
-            p.cutoffFactor = 0;
+            p.cutoffDebyeLengths = 0;
             ElectrostaticRepulsion{p};
         },
-        "cutoffFactor = 0"
+        "cutoffDebyeLengths = 0"
     );
 }
 

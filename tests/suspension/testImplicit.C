@@ -486,6 +486,7 @@ TEST(Implicit, DiluteViscosityAgreesWithVelocityVerlet)
     RandomPacking::Params pp;
     pp.phi = 0.1;
     pp.seed = 3;
+    pp.reach = 0.35;        // the run's: lubrication gap 0.25 + skin 0.1
     const RandomPacking::Result packed = RandomPacking(pp).pack(radii, rho);
     ForceModels models;
     models.set(Lubrication(lubricationParams(1e-2, 0.25)));

@@ -261,6 +261,228 @@ TEST(SizeDistribution, RejectsBadInput)
 }
 
 
+namespace
+{
+    //- Realised volume fraction of the spheres of radius a
+    double volumeShare(const std::vector<double>& radii, double a)
+    {
+        return count(radii, a)*sphereVolume(a)/solidVolume(radii);
+    }
+
+    //- sum_k (V_k/V - v_k)^2 of counts c of radii a
+    double misfit
+    (
+        const std::vector<std::size_t>& c,
+        const std::vector<double>& a,
+        const std::vector<double>& v
+    )
+    {
+        double V = 0;
+        for (std::size_t k = 0; k < c.size(); ++k)
+        {
+            V += c[k]*sphereVolume(a[k]);
+        }
+        double e = 0;
+        for (std::size_t k = 0; k < c.size(); ++k)
+        {
+            e += std::pow(c[k]*sphereVolume(a[k])/V - v[k], 2);
+        }
+        return e;
+    }
+}
+
+
+TEST(SizeDistribution, DiscreteTrimodalAtEqualVolumes)
+{
+    const std::vector<double> a{1, 1.5, 2};
+    const std::vector<double> v{0.3333333, 0.3333333, 0.3333334};
+    const SizeDistribution d =
+        SizeDistribution::discrete({2, 1, 1.5}, {v[2], v[0], v[1]}, SizeDistribution::Fractions::volume);
+    EXPECT_EQ(d.minN(), 3u);
+    EXPECT_FALSE(d.fixedN());
+
+    for (std::size_t N : {3u, 10u, 200u, 2000u, 2001u})
+    {
+        const std::vector<double> r = d.radii(N);
+        ASSERT_EQ(r.size(), N);
+        EXPECT_TRUE(std::is_sorted(r.begin(), r.end()));
+        std::vector<std::size_t> c;
+        for (double ak : a)
+        {
+            c.push_back(count(r, ak));
+            EXPECT_GE(c.back(), 1u) << "N = " << N << ", a = " << ak;
+        }
+        EXPECT_EQ(c[0] + c[1] + c[2], N);
+
+        // No single particle moved between classes brings the volume
+        // fractions closer
+        const double e = misfit(c, a, v);
+        for (std::size_t i = 0; i < 3; ++i)
+        {
+            for (std::size_t j = 0; j < 3; ++j)
+            {
+                if (i == j || c[i] == 1)
+                {
+                    continue;
+                }
+                std::vector<std::size_t> t = c;
+                --t[i];
+                ++t[j];
+                EXPECT_GE(misfit(t, a, v), e) << "N = " << N;
+            }
+        }
+    }
+
+    // N = 2000 and 300: within one particle of the largest radius (the
+    // coarsest step); n ~ 1 : 1.5^-3 : 2^-3
+    for (std::size_t N : {300u, 2000u})
+    {
+        const std::vector<double> r = d.radii(N);
+        for (std::size_t k = 0; k < 3; ++k)
+        {
+            EXPECT_NEAR(volumeShare(r, a[k]), v[k], sphereVolume(2)/solidVolume(r))
+                << "N = " << N << ", a = " << a[k];
+        }
+    }
+    const std::vector<double> r = d.radii(2000);
+    for (std::size_t k = 0; k < 3; ++k)
+    {
+        EXPECT_NEAR(volumeShare(r, a[k]), v[k], sphereVolume(a[k])/solidVolume(r))
+            << "a = " << a[k];
+    }
+    const double n1 = 2000/(1 + std::pow(1.5, -3) + std::pow(2, -3));
+    EXPECT_NEAR(static_cast<double>(count(r, 1)), n1, 1.0);
+}
+
+
+TEST(SizeDistribution, DiscreteNumberFractions)
+{
+    // Half the spheres of each radius: 50 and 50, volume fractions 1:8
+    const std::vector<double> r = SizeDistribution::discrete
+    (
+        {1, 2}, {0.5, 0.5}, SizeDistribution::Fractions::number
+    ).radii(100);
+    EXPECT_EQ(count(r, 1), 50u);
+    EXPECT_EQ(count(r, 2), 50u);
+    EXPECT_NEAR(volumeShare(r, 2), 8.0/9.0, 1e-14);
+}
+
+
+TEST(SizeDistribution, ListIsTheGivenRadiiSorted)
+{
+    const SizeDistribution d = SizeDistribution::list({1.2, 0.8, 1});
+    EXPECT_TRUE(d.fixedN());
+    EXPECT_EQ(d.minN(), 3u);
+    EXPECT_EQ(d.radii(3), (std::vector<double>{0.8, 1, 1.2}));
+    expectThrow<std::invalid_argument>([&]{ d.radii(4); }, "holds 3 radii, not N = 4");
+}
+
+
+TEST(SizeDistribution, DiscreteAndListRejectBadInput)
+{
+    using E = std::invalid_argument;
+    using F = SizeDistribution::Fractions;
+    expectThrow<E>([]{ SizeDistribution::discrete({1, 2}, {-0.1, 1.1}, F::volume); }, "volume fraction = -0.1");
+    expectThrow<E>([]{ SizeDistribution::discrete({1, 2}, {0, 1}, F::number); }, "number fraction = 0");
+    expectThrow<E>([]{ SizeDistribution::discrete({1, 2}, {0.5, 0.4}, F::volume); }, "sum to 0.9, not to 1");
+    expectThrow<E>([]{ SizeDistribution::discrete({1, 0}, {0.5, 0.5}, F::volume); }, "radius = 0");
+    expectThrow<E>([]{ SizeDistribution::discrete({1, 1}, {0.5, 0.5}, F::volume); }, "radius 1 is given twice");
+    expectThrow<E>([]{ SizeDistribution::discrete({1, 2}, {1}, F::volume); }, "2 radii but 1 volume fraction");
+    expectThrow<E>([]{ SizeDistribution::discrete({}, {}, F::volume); }, "number of radii = 0");
+    expectThrow<E>([]{ SizeDistribution::discrete({1, 2, 3}, {0.2, 0.3, 0.5}, F::volume).radii(2); }, "N = 2");
+    expectThrow<E>([]{ SizeDistribution::list({}); }, "number of radii = 0");
+    expectThrow<E>([]{ SizeDistribution::list({1, -1}); }, "radius = -1");
+}
+
+
+TEST(SizeDistribution, DescribeRadiiInUse)
+{
+    const std::vector<double> r = SizeDistribution::discrete
+    (
+        {1, 2}, {0.5, 0.5}, SizeDistribution::Fractions::number
+    ).radii(4);
+    EXPECT_EQ(describeRadii(r), "2 radii: 1 (n = 2, volume fraction 0.111111), 2 (n = 2, volume fraction 0.888889)");
+    EXPECT_EQ(describeRadii({1.28, 1.28}), "1 radius: 1.28 (n = 2, volume fraction 1)");
+    EXPECT_EQ(describeRadii({1, 2, 3}, 2), "3 distinct radii in [1, 3], mean 2");
+}
+
+
+// * * * * * * * * * * * * * * * * * BoxRule  * * * * * * * * * * * * * * * //
+
+TEST(BoxRule, SmallestNOfTheSolverIsThatOfThePacking)
+{
+    // a2/a1 = 5, V2/V1 = 1, phi = 0.5, reach 0.15 (lubrication + skin):
+    // R = 2 x 5 + 0.15 = 10.15, so every box length must be >= 30.45
+    const BoxRule rule(0.15);
+    EXPECT_DOUBLE_EQ(rule.range(5), 10.15);
+    const SizeDistribution d = SizeDistribution::bidisperse(1, 5, 1);
+    const std::size_t N = rule.smallestN(d, 0.5, Vec3::Ones());
+    ASSERT_GT(N, 2u);
+
+    // Independently: the cube side (V_s/phi)^(1/3) against 3 R
+    const auto side = [&](std::size_t n)
+    {
+        return std::cbrt(solidVolume(d.radii(n))/0.5);
+    };
+    EXPECT_GE(side(N), 3*10.15);
+    EXPECT_LT(side(N - 1), 3*10.15*(1 + 1e-9));
+    EXPECT_TRUE(rule.fits(Vec3::Constant(side(N)), 5));
+    EXPECT_FALSE(rule.fits(Vec3::Constant(side(N - 1)), 5));
+
+    // The error at N - 1 names N, and why
+    try
+    {
+        rule.check(d, N - 1, 0.5, Vec3::Ones());
+        ADD_FAILURE() << "no exception at N = " << N - 1;
+    }
+    catch (const std::invalid_argument& e)
+    {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("smallest number of particles that fits is N = " + std::to_string(N) + " "), std::string::npos) << what;
+        EXPECT_NE(what.find("3 R = 30.45"), std::string::npos) << what;
+        EXPECT_NE(what.find("R = 2 a_max + reach = 2*5 + 0.15 = 10.15"), std::string::npos) << what;
+        EXPECT_NE(what.find("Lees-Edwards"), std::string::npos) << what;
+    }
+    EXPECT_NO_THROW(rule.check(d, N, 0.5, Vec3::Ones()));
+
+    // The packing with the same reach refuses N - 1 by the same rule and
+    // takes N (it then stops at its step limit, not at the box)
+    RandomPacking::Params p;
+    p.phi = 0.5;
+    p.reach = 0.15;
+    p.maxIterations = 1;
+    expectThrow<std::invalid_argument>
+    (
+        [&]{ RandomPacking(p).pack(d.radii(N - 1), 1); },
+        "BoxRule: the box"
+    );
+    EXPECT_THROW(RandomPacking(p).pack(d.radii(N), 1), PackingError);
+}
+
+
+TEST(BoxRule, ListGivesTheLargestVolumeFraction)
+{
+    // 10 unit spheres at phi = 0.5: side 4.37 < 3 (2 + 0.1) = 6.3
+    const BoxRule rule(0.1);
+    const SizeDistribution d = SizeDistribution::list(std::vector<double>(10, 1));
+    EXPECT_EQ(rule.smallestN(d, 0.5, Vec3::Ones()), 0u);
+    const double phiFits = 10*sphereVolume(1)/std::pow(6.3, 3);
+    try
+    {
+        rule.check(d, 10, 0.5, Vec3::Ones());
+        ADD_FAILURE() << "no exception";
+    }
+    catch (const std::invalid_argument& e)
+    {
+        const std::string what = e.what();
+        const std::size_t at = what.find("fit at volume fractions up to ");
+        ASSERT_NE(at, std::string::npos) << what;
+        EXPECT_NEAR(std::stod(what.substr(at + 30)), phiFits, 1e-5) << what;
+    }
+    expectThrow<std::invalid_argument>([]{ BoxRule(-1); }, "reach (largest interaction gap + skin) = -1");
+}
+
+
 // * * * * * * * * * * * * * * * * * Packing  * * * * * * * * * * * * * * * //
 
 namespace
@@ -270,6 +492,7 @@ namespace
         RandomPacking::Params p;
         p.phi = phi;
         p.seed = seed;
+        p.reach = 0.3;      // lubrication and skin of a typical run
         return p;
     }
 }

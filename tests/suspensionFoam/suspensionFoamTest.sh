@@ -46,9 +46,16 @@
 #   criticalLoadRun, criticalLoadDimensional
 #               contact type criticalLoadContact: read (in reduced and in SI
 #               units), reported and run
-#   bad*, dimensionalConflict
+#   bad*, dimensionalConflict, missingRadiusFile, emptyRadiusFile
 #               one bad input each: a FatalIOError naming the file and the
 #               entry, before any time step
+#   smallBox    the box-rule error names the smallest N, which packs, while
+#               N - 1 is refused by the same rule
+#   trimodalPopulation
+#               a discrete population (a = 1, 1.5, 2 at equal volumes)
+#               packs to phi = 0.55; d holds the three radii in the
+#               requested volume fractions; the log reports them
+#   radiusFile  population type file: the radii of d are those of the file
 #------------------------------------------------------------------------------
 set -euo pipefail
 
@@ -143,6 +150,37 @@ runCase()
 rows()
 {
     grep -v "^#" "$1"
+}
+
+# Replace the population of case $1 by the entries $2 (dictionary text)
+setPopulation()
+{
+    local f="$work/$1/$properties"
+    foamDictionary -entry population -remove "$f" > /dev/null 2>&1 \
+        || fail "cannot remove the population"
+    printf 'population\n{\n%s\n}\n' "$2" >> "$f"
+}
+
+# A trimodal population (a = 1, 1.5, 2 at equal volumes) with fractions $2
+# of kind $3 (volumeFractions or numberFractions) for case $1
+trimodal()
+{
+    setPopulation "$1" "type discrete; nParticles 300; volumeFraction 0.55;
+seed 1; radii (1 1.5 2); $3 $2;"
+}
+
+# A population of the radii of file constant/radii of case $1, holding $2
+radiusFile()
+{
+    setPopulation "$1" 'type file; file "<constant>/radii";
+volumeFraction 0.3; seed 1;'
+    printf '%b' "$2" > "$work/$1/constant/radii"
+}
+
+# The values of the ascii list field $1, one per line
+values()
+{
+    awk '/^\(/ { inside = 1; next } /^\)/ { inside = 0 } inside' "$1"
 }
 
 # Soft, dense: contacts with history form within the first write interval
@@ -529,11 +567,143 @@ badAmbientFlowEntry)
     ;;
 
 smallBox)
-    # 3 neighbour cut-offs do not fit into the box of 30 spheres
+    # 3 neighbour cut-offs do not fit into the box of 30 spheres; the error
+    # names the smallest N that fits, which makeSuspension packs (the same
+    # rule), while N - 1 is refused by the solver
     newCase c
     setEntry c $properties population/nParticles 30
     mesh c
-    expectInputError c suspensionProperties "neighbour cut-offs"
+    expectInputError c suspensionProperties "every box length must be at least 3 R" \
+        "largest interaction gap + Verlet skin" "single image"
+    n=$(sed -n 's/.*smallest number of particles that fits is N = \([0-9]*\) .*/\1/p' \
+        "$work/c/log.wavyShearFoam")
+    [ -n "$n" ] || fail "the error names no smallest N"
+    newCase below
+    setEntry below $properties population/nParticles $((n - 1))
+    mesh below
+    expectInputError below suspensionProperties \
+        "smallest number of particles that fits is N = $n "
+    newCase fits
+    setEntry fits $properties population/nParticles $n
+    mesh fits
+    (cd "$work/fits" && makeSuspension > log.makeSuspension 2>&1) \
+        || fail "makeSuspension refused the smallest N = $n"
+    [ "$(entries "$work/fits/0/lagrangian/suspension/d")" = "$n" ] \
+        || fail "not $n particles packed"
+    ;;
+
+trimodalPopulation)
+    # phi = 0.55 reached: the solid volume of d over the box of particleBox;
+    # each radius's volume fraction within one particle of 1/3 (of the
+    # largest, the coarsest step: the fractions sum to 1, so the others
+    # take up its rounding)
+    newCase c
+    trimodal c "(0.3333333 0.3333333 0.3333334)" volumeFractions
+    mesh c
+    (cd "$work/c" && makeSuspension > log.makeSuspension 2>&1) \
+        || fail "makeSuspension"
+    box=$(awk '/^L[xyz]/ { sub(";", "", $2); printf "%s ", $2 }' \
+        "$work/c/constant/particleBox")
+    values "$work/c/0/lagrangian/suspension/d" | awk -v box="$box" '
+        { n[$1]++; v[$1] += $1^3; V += $1^3; N++; if ($1 > dMax) dMax = $1 }
+        END {
+            split(box, L, " ")
+            phi = V*3.141592653589793/6/(L[1]*L[2]*L[3])
+            if (N != 300) { print "N = " N; exit 1 }
+            if (phi < 0.55*(1 - 1e-9) || phi > 0.55*(1 + 1e-9)) {
+                print "phi = " phi; exit 1 }
+            k = 0
+            for (d in n) {
+                k++
+                if (d != 2 && d != 3 && d != 4) { print "diameter " d; exit 1 }
+                share = v[d]/V
+                one = dMax^3/V
+                if (share - 1/3 > one || 1/3 - share > one) {
+                    print "d = " d ": volume fraction " share; exit 1 }
+            }
+            if (k != 3) { print k " distinct diameters"; exit 1 }
+        }' > "$work/c/check" || fail "trimodal d: $(cat "$work/c/check")"
+    grep -q "radii        3 radii: 1 (n = .*), 1.5 (n = .*), 2 (n = " \
+        "$work/c/log.makeSuspension" || fail "the log does not report the 3 radii"
+    ;;
+
+radiusFile)
+    # 70 spheres of radius 1 and 30 of 1.4 from the file; d holds them
+    newCase c
+    radiusFile c "$(printf '1 %.0s' $(seq 70))\n$(printf '1.4\\n%.0s' $(seq 30))"
+    mesh c
+    (cd "$work/c" && makeSuspension > log.makeSuspension 2>&1) \
+        || fail "makeSuspension"
+    [ "$(values "$work/c/0/lagrangian/suspension/d" \
+        | awk '{ printf "%.12g\n", $1 }' | sort -g | uniq -c \
+        | awk '{ printf "%s:%s ", $1, $2 }')" = "70:2 30:2.8 " ] \
+        || fail "d is not the radii of the file"
+    grep -q "2 radii: 1 (n = 70, .*), 1.4 (n = 30, " "$work/c/log.makeSuspension" \
+        || fail "the log does not report the radii of the file"
+    ;;
+
+badFraction)
+    newCase c
+    trimodal c "(-0.1 0.6 0.5)" volumeFractions
+    expectInputError c suspensionProperties "volumeFractions" "element 0 = -0.1"
+    ;;
+
+badFractionSum)
+    newCase c
+    trimodal c "(0.3 0.3 0.3)" numberFractions
+    expectInputError c suspensionProperties "numberFractions" "sums to 0.9"
+    ;;
+
+bothFractions)
+    newCase c
+    trimodal c "(0.3 0.3 0.4); numberFractions (0.3 0.3 0.4)" volumeFractions
+    expectInputError c suspensionProperties "exactly one of the entries 'volumeFractions' and 'numberFractions'"
+    ;;
+
+badFractionCount)
+    newCase c
+    trimodal c "(0.5 0.5)" volumeFractions
+    expectInputError c suspensionProperties "volumeFractions" "2 fractions for 3 radii"
+    ;;
+
+badDiscreteRadius)
+    newCase c
+    setPopulation c "type discrete; nParticles 300; volumeFraction 0.3;
+seed 1; radii (1 0 2); volumeFractions (0.3 0.3 0.4);"
+    expectInputError c suspensionProperties "radii" "element 1 = 0"
+    ;;
+
+missingRadiusFile)
+    newCase c
+    radiusFile c "1 1"
+    rm "$work/c/constant/radii"
+    expectInputError c suspensionProperties "'file'" "cannot open" "constant/radii"
+    ;;
+
+emptyRadiusFile)
+    newCase c
+    radiusFile c " \n"
+    expectInputError c suspensionProperties "'file'" "constant/radii holds no radii"
+    ;;
+
+badRadiusFileNumber)
+    newCase c
+    radiusFile c "1 1.2\n1.1 one 1"
+    expectInputError c suspensionProperties "'file'" "radius 4 of" "'one', is not a number"
+    ;;
+
+badRadiusFileRadius)
+    newCase c
+    radiusFile c "1 1.2\n-1 1"
+    expectInputError c suspensionProperties "'file'" "radius 3 of" "= -1 is outside (0, inf)"
+    ;;
+
+badRadiusFileCount)
+    newCase c
+    radiusFile c "1 1.2 1"
+    foamDictionary -entry population/nParticles -add 4 "$work/c/$properties" \
+        > /dev/null 2>&1 || fail "cannot add nParticles"
+    expectInputError c suspensionProperties "nParticles" "does not match the 3 radii"
     ;;
 
 meshMismatch)
@@ -590,6 +760,9 @@ overlappingStart|jammedStart)
             || fail "wavyShearFoam"
         grep -q "overlapped; separated by FIRE" "$work/c/log.wavyShearFoam" \
             || fail "no report of the separated overlaps"
+        # The radii in use are the cloud's, not the population's 1 and 1.4
+        grep -q "radii        2 radii: 1.03 (n = .*), 1.442 (n = .*) (of the stored cloud)" \
+            "$work/c/log.wavyShearFoam" || fail "the log does not report the cloud's radii"
         awk '/^# Time/ { for (i = 2; i <= NF; i++) col[$i] = i - 1; next }
              !/^#/ && $col["maxOverlap"] > 0.01 { exit 1 }' \
             "$work/c/postProcessing/rheology/0/rheology.dat" \

@@ -307,9 +307,11 @@ int main(int argc, char** argv)
         ? SizeDistribution::bidisperse(1.0, 3.0, 0.25)
         : SizeDistribution::bidisperse(1.0, 1.4, 1.0);
     const std::vector<double> radii = dist.radii(o.N);
+    const ForceModels forceModels = models(o);
     RandomPacking::Params pp;
     pp.phi = o.phi;
     pp.seed = o.seed;
+    pp.reach = forceModels.interactionGap() + Simulation::Params().skin;
     const auto tp = Clock::now();
     RandomPacking::Result packed = RandomPacking(pp).pack(radii, rho);
     const double packSeconds = seconds(tp, Clock::now());
@@ -323,7 +325,7 @@ int main(int argc, char** argv)
     Simulation::Params sp;
     sp.rho = rho;
     sp.integrator = o.integrator;
-    Simulation sim(std::move(packed.particles), box, flow, models(o), sp);
+    Simulation sim(std::move(packed.particles), box, flow, forceModels, sp);
     sim.start(0);
     const double dt = sim.deltaT();
     for (int s = 0; s < 5; ++s)

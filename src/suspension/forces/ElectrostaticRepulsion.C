@@ -16,7 +16,7 @@ ElectrostaticRepulsion::ElectrostaticRepulsion(const Params& p)
     const char* model = "ElectrostaticRepulsion";
     checkPositive(model, "FER", p.FER);
     checkPositive(model, "lambdaD", p.lambdaD);
-    checkPositive(model, "cutoffFactor", p.cutoffFactor);
+    checkPositive(model, "cutoffDebyeLengths", p.cutoffDebyeLengths);
 }
 
 
@@ -29,9 +29,10 @@ ElectrostaticRepulsion::Params ElectrostaticRepulsion::read
     (
         input.scalar("debyeLength", ModelInput::Range::positive(), "lambda_D/a0")
     );
-    p.cutoffFactor = input.scalar
+    p.cutoffDebyeLengths = input.scalar
     (
-        "cutoff", ModelInput::Range::positive(), "cut-off gap/lambda_D"
+        "cutoffDebyeLengths", ModelInput::Range::positive(),
+        "cut-off gap/lambda_D"
     );
     return p;
 }
@@ -41,7 +42,7 @@ std::string ElectrostaticRepulsion::describe() const
 {
     std::ostringstream os;
     os  << "F_ER = " << p_.FER << ", lambdaD = " << p_.lambdaD
-        << ", cut-off gap " << gap() << " (" << p_.cutoffFactor << " lambdaD)";
+        << ", cut-off gap " << gap() << " (" << p_.cutoffDebyeLengths << " lambdaD)";
     return os.str();
 }
 

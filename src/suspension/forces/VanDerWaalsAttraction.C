@@ -33,7 +33,10 @@ VanDerWaalsAttraction::Params VanDerWaalsAttraction::read
         "eps/abar, regularisation of eq. (7)"
     );
     Params p = ElectroChemicalScales(scales).attraction();
-    p.cutoffGap = input.scalar("cutoff", Range::nonNegative(), "cut-off gap/a0");
+    p.cutoffGap = input.scalar
+    (
+        "cutoffGap", Range::nonNegative(), "cut-off surface gap/a0"
+    );
     return p;
 }
 

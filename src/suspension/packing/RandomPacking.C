@@ -23,7 +23,8 @@ namespace
     constexpr double dPhi = 0.05;
     constexpr double dPhiMin = 1e-3;
 
-    //- Target gap h* - minGap and Verlet skin, in units of a_min
+    //- Target gap h* - minGap and the largest Verlet skin, in units of
+    //  a_min (Params::reach may shorten the skin)
     constexpr double margin = 1e-3;
     constexpr double skin = 0.3;
 
@@ -282,6 +283,7 @@ RandomPacking::RandomPacking(const Params& p)
         throwOutOfRange(model, "phi", p.phi, "(0, 0.74)");
     }
     checkNonNegative(model, "minGap", p.minGap);
+    checkPositive(model, "reach", p.reach);
     checkPositive(model, "aspect x", p.aspect.x());
     checkPositive(model, "aspect y", p.aspect.y());
     checkPositive(model, "aspect z", p.aspect.z());
@@ -293,6 +295,20 @@ RandomPacking::RandomPacking(const Params& p)
     {
         throwOutOfRange(model, "maxIterations", 0, "[1, inf)");
     }
+}
+
+
+double RandomPacking::searchSkin(double hTarget, double aMin) const
+{
+    if (!(p_.reach > hTarget))
+    {
+        std::ostringstream msg;
+        msg << model << ": reach = " << p_.reach << " (the run's largest"
+            << " interaction gap + skin) must exceed the packing's target gap"
+            << " h* = minGap + " << margin << " a_min = " << hTarget;
+        throw std::invalid_argument(msg.str());
+    }
+    return std::min(skin*aMin, p_.reach - hTarget);
 }
 
 
@@ -310,17 +326,8 @@ RandomPacking::Result RandomPacking::pack
     const double aMax = *std::max_element(radii.begin(), radii.end());
     const double minGap = p_.minGap*aMin;
     const double hTarget = minGap + margin*aMin;
-
-    const double range = 2*aMax + hTarget + skin*aMin;
-    if (!(L.minCoeff() >= 3*range))
-    {
-        std::ostringstream msg;
-        msg << model << ": box (" << L.transpose() << ") too small for "
-            << N << " spheres of radius up to " << aMax << ": every box length"
-            << " must be at least 3 (2 a_max + h* + skin) = " << 3*range
-            << " for the neighbour search; use more particles";
-        throw std::invalid_argument(msg.str());
-    }
+    const double listSkin = searchSkin(hTarget, aMin);
+    BoxRule(p_.reach).check(L, aMax);
 
     // Centres uniform in the box; minimiser masses m = (a/a_min)^3; the
     // working radii are scaled by s at each stage
@@ -344,7 +351,7 @@ RandomPacking::Result RandomPacking::pack
         );
     }
 
-    NeighbourSearch search({hTarget, skin*aMin, Stencil::half});
+    NeighbourSearch search({hTarget, listSkin, Stencil::half});
     PairList list;
     Statistics stats;
 
@@ -427,13 +434,8 @@ double RandomPacking::removeOverlaps(Particles& particles, const Vec3& L) const
     const double aMax = *std::max_element(particles.a.begin(), particles.a.end());
     const double minGap = p_.minGap*aMin;
     const double hTarget = minGap + margin*aMin;
-    if (!(L.minCoeff() >= 3*(2*aMax + hTarget + skin*aMin)))
-    {
-        throw std::invalid_argument
-        (
-            std::string(model) + ": box too small for the neighbour search"
-        );
-    }
+    const double listSkin = searchSkin(hTarget, aMin);
+    BoxRule(p_.reach).check(L, aMax);
 
     // Working copy with the minimiser's masses (a/a_min)^3
     const double unitMassDensity = 3/(4*pi*aMin*aMin*aMin);
@@ -442,7 +444,7 @@ double RandomPacking::removeOverlaps(Particles& particles, const Vec3& L) const
     {
         p.add(particles.x[i], particles.a[i], unitMassDensity, particles.id[i]);
     }
-    NeighbourSearch search({hTarget, skin*aMin, Stencil::half});
+    NeighbourSearch search({hTarget, listSkin, Stencil::half});
     PairList list;
     search.rebuild(p, box, list);
     Statistics stats;

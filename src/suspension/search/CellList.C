@@ -214,16 +214,17 @@ CellList::CellList(const LeesEdwardsBox& box, double range)
           + std::to_string(range)
         );
     }
-    const Vec3 cells = L_/(range*(1 + cellMargin));
-    if (cells.minCoeff() < 3)
+    if (!fits(L_, range))
     {
         throw std::invalid_argument
         (
             "CellList: box " + str(L_) + " too small for the cut-off "
           + std::to_string(range) + " (2 a_max + gap + skin): every box length"
-            " must be at least 3 cut-offs (" + std::to_string(3*range) + ")"
+            " must be at least 3 cut-offs ("
+          + std::to_string(smallestLength(range)) + ")"
         );
     }
+    const Vec3 cells = L_/(range*(1 + cellMargin));
     if (cells.prod() > std::numeric_limits<std::uint32_t>::max())
     {
         throw std::invalid_argument
@@ -237,6 +238,18 @@ CellList::CellList(const LeesEdwardsBox& box, double range)
         n_[d] = static_cast<int>(std::floor(cells[d]));
         h_[d] = L_[d]/n_[d];
     }
+}
+
+
+bool CellList::fits(const Vec3& L, double range)
+{
+    return (L/(range*(1 + cellMargin))).minCoeff() >= 3;
+}
+
+
+double CellList::smallestLength(double range)
+{
+    return 3*range*(1 + cellMargin);
 }
 
 

@@ -116,17 +116,27 @@ void Foam::suspensionCloud::checkSetup(const scalar aMax) const
             << exit(FatalIOError);
     }
 
-    const scalar R = properties_.neighbourCutoff(aMax);
-    if (cmptMin(L) < 3*R)
+    // The one box rule of the run and the packing
+    const suspension::BoxRule rule = properties_.boxRule();
+    const string hint =
+        "Raise population/nParticles (a radius file: give more radii, or"
+        " lower population/volumeFraction), or shorten the interaction ranges"
+        " (lubrication/delta, electroChemical repulsion/cutoffDebyeLengths"
+        " and attraction/cutoffGap, integration/skin)";
+    if (!restart_)
     {
-        FatalIOErrorInFunction(properties_)
-            << "The box " << L << " is smaller than 3 neighbour cut-offs,"
-            << " 3 R = " << 3*R << " (R = 2 a_max + interaction gap + skin = "
-            << R << ")" << nl
-            << "    Raise population/nParticles, or shorten the interaction"
-            << " ranges (lubrication/delta, electroChemical cutoffs,"
-            << " integration/skin)" << nl
-            << exit(FatalIOError);
+        properties_.population().checkBox(rule, hint);
+    }
+    else
+    {
+        try
+        {
+            rule.check(toEigen(L), aMax);
+        }
+        catch (const std::invalid_argument& err)
+        {
+            raiseEngineError(properties_, err, hint);
+        }
     }
 }
 
@@ -139,7 +149,10 @@ void Foam::suspensionCloud::removeInitialOverlaps
     try
     {
         const scalar moved =
-            properties_.population().removeOverlaps(particles, start_.box);
+            properties_.population().removeOverlaps
+            (
+                particles, start_.box, properties_.boxRule()
+            );
         if (moved > 0)
         {
             Info<< "    overlaps     the spheres of " << start_.file
@@ -219,7 +232,7 @@ void Foam::suspensionCloud::reportStart() const
 {
     const suspension::Simulation& sim = *sim_;
     const suspension::TimeStepLimits& limits = sim.limits();
-    const scalar R = properties_.neighbourCutoff(sim.particles().maxRadius());
+    const scalar R = properties_.boxRule().range(sim.particles().maxRadius());
     const scalar userDeltaT = properties_.simulationParams().deltaT;
 
     properties_.report(Info);
@@ -236,7 +249,10 @@ void Foam::suspensionCloud::reportStart() const
         Info<< "new random packing, seed "
             << properties_.population().dict().get<label>("seed") << nl;
     }
-    Info<< "    neighbours   cut-off R = 2 a_max + gap + skin = " << R
+    Info<< "    radii        "
+        << suspension::describeRadii(sim.particles().a).c_str()
+        << (restart_ ? " (of the stored cloud)" : "") << nl
+        << "    neighbours   cut-off R = 2 a_max + gap + skin = " << R
         << ", box = " << start_.box/R << " R" << nl
         << "    time step    dt = " << sim.deltaT() << " ("
         << (userDeltaT > 0 ? "integration/deltaT" : "auto")
@@ -359,7 +375,7 @@ Foam::suspensionCloud::suspensionCloud(Time& runTime, const fvMesh& mesh)
     else
     {
         checkSetup(population.radii().back());
-        particles = population.pack(rho);
+        particles = population.pack(rho, properties_.boxRule());
     }
 
     try

@@ -171,9 +171,12 @@ Foam::suspensionProperties::suspensionProperties(const objectRegistry& obr)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::scalar Foam::suspensionProperties::neighbourCutoff(const scalar aMax) const
+suspension::BoxRule Foam::suspensionProperties::boxRule() const
 {
-    return 2*aMax + models_.interactionGap() + simulationParams_.skin;
+    return suspension::BoxRule
+    (
+        models_.interactionGap() + simulationParams_.skin
+    );
 }
 
 
@@ -187,8 +190,7 @@ void Foam::suspensionProperties::report(Ostream& os) const
         << "    population   " << population_.dict().get<word>("type")
         << ", N = " << population_.nParticles()
         << ", phi = " << population_.volumeFraction()
-        << ", radii [" << population_.radii().front() << ", "
-        << population_.radii().back() << "], box " << population_.box() << nl
+        << ", box " << population_.box() << nl
         << "    models       " << m.summary().c_str() << nl
         << "    Stokes drag  eta0 = " << m.drag().params().eta
         << ", rho = St = " << s.rho << nl;
