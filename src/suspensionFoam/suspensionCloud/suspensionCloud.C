@@ -263,12 +263,27 @@ void Foam::suspensionCloud::reportStart() const
     {
         Info<< ' ' << l.name.c_str() << ' ' << l.value;
     }
+    // Simulation::advance: steps of deltaT and a shorter last one
+    const scalar interval = runTime_.deltaTValue();
     const scalar outerSteps =
-        max(scalar(1), std::ceil(runTime_.deltaTValue()/sim.deltaT()));
+        max(scalar(1), std::ceil(interval/sim.deltaT()*(1 - 1e-12)));
+    const scalar lastStep = interval - (outerSteps - 1)*sim.deltaT();
     Info<< nl
-        << "    outer step   " << runTime_.deltaTValue()
-        << (sim.params().maxDisplacement > 0 ? " >= " : " = ") << outerSteps
-        << " steps" << nl
+        << "    outer step   " << interval;
+    if (sim.params().maxDisplacement > 0)
+    {
+        Info<< " >= " << outerSteps << " steps";
+    }
+    else if (outerSteps > 1 && lastStep < sim.deltaT()*(1 - 1e-9))
+    {
+        Info<< " = " << outerSteps - 1 << " steps of dt and one of "
+            << lastStep;
+    }
+    else
+    {
+        Info<< " = " << outerSteps << " steps";
+    }
+    Info<< nl
         << "    threads      " << omp_get_max_threads() << nl << endl;
 
     if (userDeltaT > limits.deltaT())
