@@ -19,8 +19,17 @@ add_library(OpenFOAM::finiteVolume ALIAS OpenFOAM_finiteVolume)
 foreach(dir OpenFOAM OSspecific/POSIX finiteVolume meshTools lagrangian/basic fileFormats surfMesh)
     target_include_directories(OpenFOAM_finiteVolume SYSTEM INTERFACE "${WSF_FOAM_SRC}/${dir}/lnInclude")
 endforeach()
+# The definitions wmake gives (wmake/rules/General/general), from the
+# environment the libraries were built in
+set(WSF_FOAM_PRECISION "$ENV{WM_PRECISION_OPTION}" CACHE STRING "WM_PRECISION_OPTION (DP, SP)")
+set(WSF_FOAM_LABEL_SIZE "$ENV{WM_LABEL_SIZE}" CACHE STRING "WM_LABEL_SIZE (32, 64)")
+set(WSF_FOAM_API "$ENV{FOAM_API}" CACHE STRING "FOAM_API (1912)")
+if(NOT WSF_FOAM_PRECISION OR NOT WSF_FOAM_LABEL_SIZE OR NOT WSF_FOAM_API)
+    message(FATAL_ERROR "WM_PRECISION_OPTION, WM_LABEL_SIZE or FOAM_API unset: source etc/bashrc (or your OpenFOAM environment) first")
+endif()
 target_compile_definitions(OpenFOAM_finiteVolume INTERFACE
-    WM_DP WM_LABEL_SIZE=32 NoRepository OPENFOAM=1912)
+    WM_${WSF_FOAM_PRECISION} WM_LABEL_SIZE=${WSF_FOAM_LABEL_SIZE}
+    NoRepository OPENFOAM=${WSF_FOAM_API})
 target_compile_options(OpenFOAM_finiteVolume INTERFACE
     -m64 -ftemplate-depth-100 -Wno-deprecated-declarations -Wno-old-style-cast)
 target_link_directories(OpenFOAM_finiteVolume INTERFACE "${WSF_FOAM_LIBBIN}")

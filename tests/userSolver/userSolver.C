@@ -7,7 +7,7 @@ Description
     its own Make/files and Make/options (tests/userSolver/userSolverTest.sh
     builds and runs it; README "Using the libraries in your own solver").
     It selects an ambient flow from constant/suspensionProperties, prints it
-    at the centre of the mesh, and evolves the suspension cloud.
+    at the centre of the mesh, and evolves the suspension cloud in it.
 
 \*---------------------------------------------------------------------------*/
 
@@ -25,11 +25,11 @@ int main(int argc, char *argv[])
     (
         IOobject("suspensionProperties", runTime.constant(), mesh, IOobject::MUST_READ)
     );
-    const autoPtr<ambientFlow> flow =
+    autoPtr<ambientFlow> flow =
         ambientFlow::New(mesh, properties.subDict("ambientFlow"));
     Info<< "userSolver: U at the centre " << flow->U(mesh.bounds().centre()) << endl;
 
-    suspensionCloud particles(runTime, mesh);
+    suspensionCloud particles(runTime, mesh, std::move(flow));
     while (runTime.run())
     {
         ++runTime;

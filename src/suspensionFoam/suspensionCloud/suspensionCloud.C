@@ -73,6 +73,14 @@ void Foam::suspensionCloud::checkSetup(const scalar aMax) const
             << " with units dimensional, dimensional/gammaDot sets gammaDot)"
             << nl << exit(FatalIOError);
     }
+    // A flow the solver selected must know the particle box (its periodic
+    // part lives in it)
+    if (cmptMax(cmptMag(flow_->box() - L)) > tol)
+    {
+        FatalErrorInFunction
+            << "The ambient flow's box " << flow_->box() << " is not the"
+            << " particle box " << L << nl << exit(FatalError);
+    }
 
     if (restart_)
     {
@@ -341,6 +349,17 @@ void Foam::suspensionCloud::reportProgress()
 
 Foam::suspensionCloud::suspensionCloud(Time& runTime, const fvMesh& mesh)
 :
+    suspensionCloud(runTime, mesh, autoPtr<ambientFlow>())
+{}
+
+
+Foam::suspensionCloud::suspensionCloud
+(
+    Time& runTime,
+    const fvMesh& mesh,
+    autoPtr<ambientFlow>&& flow
+)
+:
     regIOobject
     (
         IOobject
@@ -357,7 +376,12 @@ Foam::suspensionCloud::suspensionCloud(Time& runTime, const fvMesh& mesh)
     properties_(mesh),
     restart_(suspensionIO::found(runTime)),
     start_(initialState()),
-    flow_(ambientFlow::New(properties_.ambientFlowDict(), start_.box, &mesh)),
+    flow_
+    (
+        flow.valid()
+      ? std::move(flow)
+      : ambientFlow::New(properties_.ambientFlowDict(), start_.box, &mesh)
+    ),
     engineFlow_(*flow_),
     sim_(),
     lastGood_(),

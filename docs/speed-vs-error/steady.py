@@ -1,0 +1,94 @@
+#!/usr/bin/python3
+"""Table of docs/speed-vs-error/steady.sh: for each case under RUNROOT, the
+solver's own steady-state summary of eta_r (the latest
+postProcessing/rheology/*/rheologySummary.dat), the mean step, the CPU
+seconds per strain, and the difference to the case of the smallest safety
+with the error bar of that difference (the two runs are independent).
+
+    steady.py RUNROOT      ->  docs/speed-vs-error/steady.csv, steady.md
+"""
+import glob
+import math
+import os
+import re
+import sys
+
+here = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(here, ".."))
+from rheologydata import cpuSeconds, readRheology  # noqa: E402
+
+
+def summary(case):
+    """etaR line and header facts of the latest rheologySummary.dat"""
+    files = glob.glob(os.path.join(case, "postProcessing", "rheology", "*", "rheologySummary.dat"))
+    if not files:
+        return None
+    path = max(files, key=lambda f: float(os.path.basename(os.path.dirname(f))))
+    out = {}
+    with open(path) as f:
+        for line in f:
+            m = re.match(r"# Steady-state rheology at time (\S+)", line)
+            if m:
+                out["time"] = float(m.group(1))
+            w = line.split()
+            if w and w[0] == "etaR":
+                out.update(mean=float(w[1]), se=float(w[2]), corr=float(w[4]),
+                           blocks=int(w[6]), used=float(w[7]),
+                           discarded=float(w[8]), trusted=w[9])
+    return out
+
+
+def main(runRoot):
+    rows = []
+    for case in sorted(glob.glob(os.path.join(runRoot, "*", "*"))):
+        s = summary(case)
+        if not s or "mean" not in s:
+            continue
+        m = re.search(r"(\w+)-safety([0-9.]+)$", case)
+        r = readRheology(case)
+        cpu = cpuSeconds(case)
+        rows.append(dict(
+            case=os.path.basename(os.path.dirname(case)),
+            integrator=m.group(1), safety=float(m.group(2)),
+            deltaT=float(r["deltaT"][-1]) if r is not None else float("nan"),
+            strain=s["time"], cpu_s_per_strain=cpu/s["time"],
+            etaR=s["mean"], se=s["se"], corr=s["corr"], blocks=s["blocks"],
+            used=s["used"], discarded=s["discarded"], trusted=s["trusted"]))
+    if not rows:
+        sys.exit("steady.py: no summaries under " + runRoot)
+    ref = min(rows, key=lambda r: r["safety"])
+    for r in rows:
+        d = r["etaR"] - ref["etaR"]
+        e = math.hypot(r["se"], ref["se"]) if r is not ref else 0.0
+        r["bias_pct"] = 100*d/ref["etaR"]
+        r["bias_err_pct"] = 100*e/ref["etaR"]
+    rows.sort(key=lambda r: -r["safety"])
+
+    cols = ["case", "integrator", "safety", "deltaT", "strain", "cpu_s_per_strain",
+            "etaR", "se", "corr", "blocks", "used", "discarded", "trusted",
+            "bias_pct", "bias_err_pct"]
+    with open(os.path.join(here, "steady.csv"), "w") as f:
+        f.write(",".join(cols) + "\n")
+        for r in rows:
+            f.write(",".join(str(r[c]) for c in cols) + "\n")
+    with open(os.path.join(here, "steady.md"), "w") as f:
+        f.write("Table written by `docs/speed-vs-error/steady.py` from the runs of "
+                "`docs/speed-vs-error/steady.sh` (steady.csv); ηr ± one standard "
+                "error from the solver's rheologySummary.dat; difference to safety "
+                "%g ± the error of the difference.\n\n" % ref["safety"])
+        f.write("| case | safety | Δt (mean) | strain | discarded | ηr | ± | "
+                "difference | ± | CPU s/strain | trusted |\n")
+        f.write("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n")
+        for r in rows:
+            f.write("| %s | %g | %.3g | %g | %.3g | %.4g | %.2g | %s | %s | %.3g | %s |\n" % (
+                r["case"], r["safety"], r["deltaT"], r["strain"], r["discarded"],
+                r["etaR"], r["se"],
+                "reference" if r is ref else "%+.2f %%" % r["bias_pct"],
+                "" if r is ref else "%.2f %%" % r["bias_err_pct"],
+                r["cpu_s_per_strain"], r["trusted"]))
+    print(open(os.path.join(here, "steady.md")).read())
+
+
+if __name__ == "__main__":
+    main(sys.argv[1] if len(sys.argv) > 1 else
+         os.path.join(here, "..", "..", "run", "speed-vs-error", "steady"))
