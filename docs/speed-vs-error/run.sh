@@ -101,7 +101,7 @@ meshFlow()
     if [ $mode = quick ]; then window=0.05; cells="8"; fi
     local small=$root/tutorials/wavyShear/small n
     runCase "$runRoot/meshFlow/analytic" "$small" $window 0.01 \
-        integration/integrator=implicitEuler || failed=1
+        integration/integrator=implicitEuler lubrication/epsilon=1e-2 || failed=1
     for n in $cells; do
         WSF_CASE_SETUP="foamDictionary -entry ambientFlow -set \
             '{ type meshSampled; flow { type wavyShear; shearRate 1; amplitude 3.2; periods 1; } }' \
@@ -109,7 +109,7 @@ meshFlow()
          && sed -i 's/(4 8 4)/($n $n $n)/' system/blockMeshDict \
          && blockMesh > log.blockMesh 2>&1" \
         runCase "$runRoot/meshFlow/cells$n" "$small" $window 0.01 \
-            integration/integrator=implicitEuler || failed=1
+            integration/integrator=implicitEuler lubrication/epsilon=1e-2 || failed=1
     done
 }
 

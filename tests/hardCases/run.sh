@@ -5,7 +5,7 @@
 #
 #   tests/hardCases/run.sh [--quick] [case ...]
 #
-# Checks (from rheology.dat, written by the solver): the run reaches its end
+# Checks (from rheology.dat, written by the function object suspensionRheology): the run reaches its end
 # time (a NaN or a runaway overlap stops the solver with a diagnostic and a
 # non-zero exit), the largest overlap stays below 5% of the smaller radius,
 # every eta_r is finite. The long run also checks that the particle count,

@@ -17,8 +17,8 @@ Description
     Units are reduced (a0 = eta0 = gammaDot = 1): time is strain.
 
     The OpenFOAM time step deltaT is the sampling interval: each time step
-    advances the particles by deltaT in as many equal engine steps as the
-    stability limit needs. The run starts from the suspension stored at the
+    advances the particles by deltaT in engine steps of the stability
+    limit (times safety) and one shorter last step that lands on the time. The run starts from the suspension stored at the
     start time (startFrom latestTime continues a run bitwise, for the same
     number of threads), or from a new random packing of the population if
     the start time holds none.
