@@ -7,7 +7,8 @@
 # solver's own summaries (postProcessing/rheology/*/rheologySummary.dat of
 # the function object suspensionRheology), tabulated by steady.py.
 #
-#   docs/speed-vs-error/steady.sh [strain] [safety ...]
+#   [INTEGRATOR=overdamped] docs/speed-vs-error/steady.sh [strain] [safety ...]
+# (default integrator: implicitEuler)
 #
 # Cases under run/speed-vs-error/steady/, restartable (etc/caseFunctions):
 # two at a time, one thread each.
@@ -22,11 +23,13 @@ safeties=${*:-"0.4 0.2 0.1 0.05"}
 runRoot=${WSF_SPEED_DIR:-$root/run/speed-vs-error}/steady
 template=$root/tutorials/uniformShear/frictionless
 
+integrator=${INTEGRATOR:-implicitEuler}
+
 one()
 {
-    runCase "$runRoot/frictionless/implicitEuler-safety$1" "$template" \
+    runCase "$runRoot/frictionless/$integrator-safety$1" "$template" \
         "$strain" 0.01 population/volumeFraction=0.5 \
-        integration/integrator=implicitEuler integration/safety="$1"
+        integration/integrator="$integrator" integration/safety="$1"
 }
 
 failed=0
