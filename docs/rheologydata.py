@@ -35,6 +35,28 @@ def readRheology(case):
     return {name: np.array([r[name] for r in ordered]) for name in common}
 
 
+def readSummary(case, quantity="etaR"):
+    """One quantity's row of the latest rheologySummary.dat of a case (the
+    function object suspensionRheology's steady-state summary) and the time
+    it was made at; None without one"""
+    files = glob.glob(os.path.join(case, "postProcessing", "rheology", "*", "rheologySummary.dat"))
+    if not files:
+        return None
+    path = max(files, key=lambda f: float(os.path.basename(os.path.dirname(f))))
+    out = {}
+    with open(path) as f:
+        for line in f:
+            m = re.match(r"# Steady-state rheology at time (\S+)", line)
+            if m:
+                out["time"] = float(m.group(1))
+            w = line.split()
+            if w and w[0] == quantity:
+                out.update(mean=float(w[1]), se=float(w[2]), corr=float(w[4]),
+                           blocks=int(w[6]), used=float(w[7]),
+                           discarded=float(w[8]), trusted=w[9])
+    return out if "mean" in out else None
+
+
 def wallSeconds(case):
     """Wall time of all runs of a case (written by etc/caseFunctions)"""
     try:

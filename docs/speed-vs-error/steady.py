@@ -18,34 +18,14 @@ import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(here, ".."))
-from rheologydata import cpuSeconds, readRheology  # noqa: E402
-
-
-def summary(case):
-    """etaR line and header facts of the latest rheologySummary.dat"""
-    files = glob.glob(os.path.join(case, "postProcessing", "rheology", "*", "rheologySummary.dat"))
-    if not files:
-        return None
-    path = max(files, key=lambda f: float(os.path.basename(os.path.dirname(f))))
-    out = {}
-    with open(path) as f:
-        for line in f:
-            m = re.match(r"# Steady-state rheology at time (\S+)", line)
-            if m:
-                out["time"] = float(m.group(1))
-            w = line.split()
-            if w and w[0] == "etaR":
-                out.update(mean=float(w[1]), se=float(w[2]), corr=float(w[4]),
-                           blocks=int(w[6]), used=float(w[7]),
-                           discarded=float(w[8]), trusted=w[9])
-    return out
+from rheologydata import cpuSeconds, readRheology, readSummary  # noqa: E402
 
 
 def main(runRoot):
     rows = []
     for case in sorted(glob.glob(os.path.join(runRoot, "*", "*"))):
-        s = summary(case)
-        if not s or "mean" not in s:
+        s = readSummary(case)
+        if not s:
             continue
         m = re.search(r"(\w+)-safety([0-9.]+)$", case)
         r = readRheology(case)

@@ -14,15 +14,15 @@ import re
 import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, here)
-from summaries import summary  # noqa: E402
+sys.path.insert(0, os.path.dirname(here))
+from rheologydata import readSummary  # noqa: E402
 
 
 def main(runRoot):
     groups = {}
     for case in sorted(glob.glob(os.path.join(runRoot, "delta*-phi*-seed*"))):
         m = re.search(r"(delta[0-9.]+-phi[0-9.]+)-seed(\d+)$", case)
-        s = summary(case)
+        s = readSummary(case)
         if m and s:
             groups.setdefault(m.group(1), []).append((int(m.group(2)), s))
     if not groups:

@@ -18,27 +18,15 @@ import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
 root = os.path.dirname(os.path.dirname(here))
-
-
-def summary(case):
-    files = glob.glob(os.path.join(case, "postProcessing", "rheology", "*", "rheologySummary.dat"))
-    if not files:
-        return None
-    path = max(files, key=lambda f: float(os.path.basename(os.path.dirname(f))))
-    with open(path) as f:
-        for line in f:
-            w = line.split()
-            if w and w[0] == "etaR":
-                return dict(mean=float(w[1]), se=float(w[2]), corr=float(w[4]),
-                            used=float(w[7]), discarded=float(w[8]), trusted=w[9])
-    return None
+sys.path.insert(0, os.path.dirname(here))
+from rheologydata import readSummary  # noqa: E402
 
 
 def main(runRoot):
     points = {}
     for case in sorted(glob.glob(os.path.join(runRoot, "frictionless", "delta*-phi*-seed*"))):
         m = re.search(r"delta([0-9.]+)-phi([0-9.]+)-seed(\d+)$", case)
-        s = summary(case)
+        s = readSummary(case)
         if m and s:
             points.setdefault((float(m.group(1)), float(m.group(2))), []).append(s)
     old = {}
