@@ -216,9 +216,8 @@ void Simulation::advance(double interval)
             }
         }
     }
-    // n - 1 steps of dtMax and the rest; the (1 - 1e-12) keeps an interval
-    // of a whole number of steps from a last step of round-off size
-    const auto n = static_cast<std::uint64_t>(std::ceil(interval/dtMax_*(1 - 1e-12)));
+    // n - 1 steps of dtMax and the rest
+    const std::uint64_t n = stepsIn(interval);
     const double t0 = time_;
     for (std::uint64_t k = 1; k < n; ++k)
     {
@@ -227,6 +226,17 @@ void Simulation::advance(double interval)
     }
     step(t0 + interval - time_);
     time_ = t0 + interval;
+}
+
+
+std::uint64_t Simulation::stepsIn(double interval) const
+{
+    // The (1 - 1e-12) keeps an interval of a whole number of steps from a
+    // last step of round-off size
+    return std::max<std::uint64_t>
+    (
+        1, static_cast<std::uint64_t>(std::ceil(interval/dtMax_*(1 - 1e-12)))
+    );
 }
 
 

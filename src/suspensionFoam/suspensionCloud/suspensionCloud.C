@@ -273,8 +273,7 @@ void Foam::suspensionCloud::reportStart() const
     }
     // Simulation::advance: steps of deltaT and a shorter last one
     const scalar interval = runTime_.deltaTValue();
-    const scalar outerSteps =
-        max(scalar(1), std::ceil(interval/sim.deltaT()*(1 - 1e-12)));
+    const label outerSteps = label(sim.stepsIn(interval));
     const scalar lastStep = interval - (outerSteps - 1)*sim.deltaT();
     Info<< nl
         << "    outer step   " << interval;

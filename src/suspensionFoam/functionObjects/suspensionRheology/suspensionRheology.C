@@ -98,7 +98,12 @@ bool Foam::functionObjects::suspensionRheology::summarise(const bool report)
         }
     }
 
-    const suspension::SteadyState etaR(strain, series.column("etaR"), opt);
+    std::vector<suspension::SteadyState> states;
+    for (const word& q : quantities)
+    {
+        states.emplace_back(strain, series.column(q), opt);
+    }
+    const suspension::SteadyState& etaR = states[0];
     const scalar relError =
         etaR.nBlocks() > 1 && etaR.mean() != 0
       ? etaR.standardError()/mag(etaR.mean())
@@ -113,9 +118,10 @@ bool Foam::functionObjects::suspensionRheology::summarise(const bool report)
         << std::setw(12) << "blockStrain" << std::setw(8) << "blocks"
         << std::setw(12) << "strainUsed" << std::setw(16) << "strainDiscarded"
         << std::setw(9) << "trusted" << '\n';
-    for (const word& q : quantities)
+    forAll(quantities, i)
     {
-        const suspension::SteadyState st(strain, series.column(q), opt);
+        const word& q = quantities[i];
+        const suspension::SteadyState& st = states[i];
         table
             << std::left << std::setw(20) << ("  " + q) << std::right
             << std::setprecision(6)
