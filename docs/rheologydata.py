@@ -35,26 +35,54 @@ def readRheology(case):
     return {name: np.array([r[name] for r in ordered]) for name in common}
 
 
-def readSummary(case, quantity="etaR"):
-    """One quantity's row of the latest rheologySummary.dat of a case (the
-    function object suspensionRheology's steady-state summary) and the time
-    it was made at; None without one"""
+def readSummaries(case):
+    """Every quantity's row of the latest rheologySummary.dat of a case (the
+    function object suspensionRheology's steady-state summary), as
+    {quantity: {mean, se, corr, blocks, used, discarded, trusted, time}};
+    None without one"""
     files = glob.glob(os.path.join(case, "postProcessing", "rheology", "*", "rheologySummary.dat"))
     if not files:
         return None
     path = max(files, key=lambda f: float(os.path.basename(os.path.dirname(f))))
-    out = {}
+    out, time = {}, float("nan")
     with open(path) as f:
         for line in f:
             m = re.match(r"# Steady-state rheology at time (\S+)", line)
             if m:
-                out["time"] = float(m.group(1))
+                time = float(m.group(1))
             w = line.split()
-            if w and w[0] == quantity:
-                out.update(mean=float(w[1]), se=float(w[2]), corr=float(w[4]),
-                           blocks=int(w[6]), used=float(w[7]),
-                           discarded=float(w[8]), trusted=w[9])
-    return out if "mean" in out else None
+            if len(w) == 10 and not line.startswith("#"):
+                out[w[0]] = dict(mean=float(w[1]), se=float(w[2]), corr=float(w[4]),
+                                 block=float(w[5]), blocks=int(w[6]), used=float(w[7]),
+                                 discarded=float(w[8]), trusted=w[9], time=time)
+    return out or None
+
+
+def readSummary(case, quantity="etaR"):
+    """One quantity's row of readSummaries(case); None without one"""
+    return (readSummaries(case) or {}).get(quantity)
+
+
+def combineSeeds(rows):
+    """Mean and error of one quantity over independent runs (rows of
+    readSummaries): the mean weighted by 1/se^2, its error sqrt(1/sum w)
+    scaled up by sqrt(chi^2/(n - 1)) when the runs scatter more than their
+    error bars say (the Particle Data Group's scale factor; near jamming one
+    run's error bar is a lower bound, docs/validation.md); a run with se = 0
+    (a constant, e.g. the Stokes part) gives the plain mean and error 0, a
+    run without an error bar (se nan) the plain mean and error nan"""
+    means = [r["mean"] for r in rows]
+    if any(math.isnan(r["se"]) for r in rows):
+        return sum(means)/len(means), float("nan")
+    if any(r["se"] <= 0 for r in rows):
+        return sum(means)/len(means), 0.0
+    w = [1/r["se"]**2 for r in rows]
+    mean = sum(wi*x for wi, x in zip(w, means))/sum(w)
+    error = math.sqrt(1/sum(w))
+    if len(rows) > 1:
+        chi2 = sum(wi*(x - mean)**2 for wi, x in zip(w, means))
+        error *= max(1.0, math.sqrt(chi2/(len(rows) - 1)))
+    return mean, error
 
 
 def wallSeconds(case):

@@ -1,17 +1,18 @@
 #!/usr/bin/python3
-"""Analyse the runs of docs/validation/run.sh and write docs/validation/.
+"""Tabulate the runs of docs/validation/run.sh and write docs/validation/.
 
     docs/validation/analyse.py [--quick]
 
-For every point: the rheology.dat files of all restarts joined by strain;
-the start-up transient (DISCARD below, per case) dropped; the steady part
-cut into blocks of equal strain and averaged block by block. A point's
-value is the mean of its block means over all its seeds (initial
-configurations), its error bar the standard error of those block means
-(blocks longer than the stress correlation strain are independent; the
-block length is printed). Writes <case>.csv (one row per point, columns
-below) and <case>.png, prints the Markdown tables and puts them into
-docs/validation.md between its <!-- table:<case> --> markers.
+Every number is the solver's own: for each run (seed) the latest
+postProcessing/rheology/*/rheologySummary.dat that the function object
+suspensionRheology writes (start-up transient by the MSER-5 rule, blocks of
+two correlation strains; README "The rheology with an error bar"). A point's
+value is the mean over its seeds (initial configurations) weighted by their
+errors, its error bar that of the weighted mean, scaled up when the seeds
+scatter more than their error bars say (rheologydata.combineSeeds). Writes
+<case>.csv (one row per point, columns below) and <case>.png, prints the
+Markdown tables and puts them into docs/validation.md between its
+<!-- table:<case> --> markers.
 """
 import glob
 import math
@@ -28,24 +29,20 @@ import numpy as np
 here = os.path.dirname(os.path.abspath(__file__))
 root = os.path.dirname(os.path.dirname(here))
 sys.path.insert(0, os.path.dirname(here))
-from rheologydata import (blockMeans, fillTables, meanAndError,  # noqa: E402
-                          readRheology, wallSeconds, writeCsv)
+from rheologydata import (combineSeeds, fillTables, readRheology,  # noqa: E402
+                          readSummaries, wallSeconds, writeCsv)
 quick = "--quick" in sys.argv
 mode = "quick" if quick else "full"
 runs = os.path.join(os.environ.get("WSF_VALIDATION_DIR", os.path.join(root, "run", "validation")), mode)
 out = os.path.join(runs, "results") if quick else here    # quick: not in docs/
-os.makedirs(out, exist_ok=True)
-
-# Strain discarded as start-up transient, per case (quick: half the run)
-DISCARD = {"frictionless": 5.0, "frictional": 1.5, "shearThickening": 1.0,
-           "dilute": 0.5, "wavy": 0.5}
-BLOCKS = 8                      # blocks per seed over the steady part
 
 COLUMNS = ["case", "parameter", "x", "setting", "reference", "value", "error",
            "relative_difference", "N1", "N1_error", "N2", "N2_error",
-           "etaN", "share_stokes", "share_lubrication", "share_contact",
+           "Pi", "Pi_error", "share_stokes", "share_lubrication", "share_contact",
            "share_electroChemical", "seeds", "strain", "discarded_strain",
-           "block_strain", "wall_seconds"]
+           "correlation_strain", "trusted", "wall_seconds"]
+CONTRIBUTIONS = ("etaR_stokes", "etaR_lubrication", "etaR_contact",
+                 "etaR_repulsion", "etaR_attraction")
 
 
 def fitFrictionless(phi):
@@ -58,35 +55,24 @@ def fitFrictional(phi):
     return 0.71*(1 - phi/0.575)**-2.3
 
 
-def analysePoint(caseName, dirs):
-    """Steady averages over the seeds (case directories) of one point"""
-    collected = defaultdict(list)
-    strain = discarded = block = wall = 0.0
-    for d in dirs:
-        r = readRheology(d)
-        if r is None or len(r["strain"]) < 4:
-            continue
-        s = r["strain"]
-        start = 0.5*s[-1] if quick else min(DISCARD[caseName], 0.5*s[-1])
-        for name in ("etaR", "N1", "N2", "etaN", "etaR_stokes", "etaR_lubrication",
-                     "etaR_contact", "etaR_repulsion", "etaR_attraction"):
-            m, block = blockMeans(s, r[name], start, BLOCKS)
-            collected[name].extend(m)
-        strain += s[-1]
-        discarded += start
-        wall += wallSeconds(d)
-    if not collected:
+def analysePoint(dirs):
+    """The seeds' (case directories') summaries of one point combined"""
+    summaries = [x for x in (readSummaries(d) for d in dirs) if x and "etaR" in x]
+    if not summaries:
         return None
-    res = {"seeds": len(dirs), "strain": strain, "discarded_strain": discarded,
-           "block_strain": block, "wall_seconds": wall}
-    for name in ("etaR", "N1", "N2", "etaN"):
-        res[name], res[name + "_error"] = meanAndError(collected[name])
+    etaR = [x["etaR"] for x in summaries]
+    res = {"seeds": len(summaries),
+           "strain": sum(x["time"] for x in etaR),
+           "discarded_strain": sum(x["discarded"] for x in etaR),
+           "correlation_strain": max(x["corr"] for x in etaR),
+           "trusted": "yes" if all(x["trusted"] == "yes" for x in etaR) else "no",
+           "wall_seconds": sum(wallSeconds(d) for d in dirs)}
+    for name in ("etaR", "N1", "N2", "Pi") + CONTRIBUTIONS:
+        res[name], res[name + "_error"] = combineSeeds([x[name] for x in summaries])
     particles = res["etaR"] - 1
-    res["share_stokes"] = np.mean(collected["etaR_stokes"])/particles
-    res["share_lubrication"] = np.mean(collected["etaR_lubrication"])/particles
-    res["share_contact"] = np.mean(collected["etaR_contact"])/particles
-    res["share_electroChemical"] = (np.mean(collected["etaR_repulsion"])
-                                    + np.mean(collected["etaR_attraction"]))/particles
+    for c in ("stokes", "lubrication", "contact"):
+        res["share_" + c] = res["etaR_" + c]/particles
+    res["share_electroChemical"] = (res["etaR_repulsion"] + res["etaR_attraction"])/particles
     return res
 
 
@@ -111,8 +97,9 @@ def row(caseName, parameter, x, setting, reference, res):
 
 
 def markdown(rows, withShares=False):
-    head = "| point | reference | eta_r | ± | difference | N1 | N2 | strain (seeds) | wall s |"
-    sep = "|---|---:|---:|---:|---:|---:|---:|---:|---:|"
+    head = ("| point | reference | eta_r | ± | difference | N1 | N2 | strain (seeds) "
+            "| discarded | correlation strain | trusted | wall s |")
+    sep = "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|"
     lines = [head, sep]
     for r in rows:
         ref = "" if not r["reference"] or math.isnan(r["reference"]) else f"{r['reference']:.3g}"
@@ -120,7 +107,8 @@ def markdown(rows, withShares=False):
         lines.append(
             f"| {r['setting']} {r['parameter']} = {r['x']:g} | {ref} | {r['value']:.4g} | "
             f"{r['error']:.2g} | {diff} | {r['N1']:.3g} | {r['N2']:.3g} | "
-            f"{r['strain']:.3g} ({r['seeds']}) | {r['wall_seconds']:.0f} |")
+            f"{r['strain']:.3g} ({r['seeds']}) | {r['discarded_strain']:.2g} | "
+            f"{r['correlation_strain']:.2g} | {r['trusted']} | {r['wall_seconds']:.0f} |")
     if withShares:
         lines += ["", "| point | Stokes | lubrication | contact | electro-chemical |",
                   "|---|---:|---:|---:|---:|"]
@@ -136,7 +124,7 @@ def jamming(caseName, fit, fitLabel, title):
     rows = []
     for label, dirs in sorted(points(caseName).items()):
         m = re.search(r"phi([0-9.]+)", label)
-        res = analysePoint(caseName, dirs)
+        res = analysePoint(dirs)
         if not m or res is None:
             continue
         phi = float(m.group(1))
@@ -168,7 +156,7 @@ def shearThickening():
     rows = []
     plateaux = {}
     for label, dirs in sorted(points("shearThickening").items()):
-        res = analysePoint("shearThickening", dirs)
+        res = analysePoint(dirs)
         if res is None:
             continue
         m = re.match(r"lambda([0-9.]+)-ratio([0-9.]+)-rate(.+)", label)
@@ -224,13 +212,13 @@ def wavy():
     histories = {}
     profiles = {}
     for label, dirs in sorted(points("wavy").items()):
-        res = analysePoint("wavy", dirs)
+        res = analysePoint(dirs)
         if res is None:
             continue
         rows.append(row("wavy", "N", float(label.split("-N")[-1]), label.split("-")[0],
                         float("nan"), res))
         histories[label] = readRheology(dirs[0])
-        start = 0.5*histories[label]["strain"][-1] if quick else DISCARD["wavy"]
+        start = readSummaries(dirs[0])["etaR"]["discarded"]
         profiles[label] = readProfiles(dirs[0], start)
     if not rows:
         return []
@@ -268,7 +256,7 @@ def wavy():
 def dilute():
     rows = []
     for label, dirs in sorted(points("dilute").items()):
-        res = analysePoint("dilute", dirs)
+        res = analysePoint(dirs)
         if res is None:
             continue
         phi = float(label.replace("phi", ""))

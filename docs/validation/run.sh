@@ -108,7 +108,7 @@ wavy()
 # Einstein's 1 + 2.5 phi: monodisperse, no contact needed, lubrication on
 dilute()
 {
-    local phis="0.01 0.02 0.05" end=2
+    local phis="0.01 0.02 0.05" end=100
     if [ $mode = quick ]; then phis="0.02"; end=0.2; fi
     local phi
     for phi in $phis; do

@@ -152,3 +152,22 @@ TEST(SteadyState, DiscardOverride)
     EXPECT_GE(st.strainDiscarded(), 10 - 1e-12);
     EXPECT_LT(st.strainDiscarded(), 10 + st.blockStrain());
 }
+
+
+TEST(SteadyState, ConstantSeriesIsExactAndTrusted)
+{
+    // The Stokes part at phi = 0.53, 2.5 phi = 1.325: a sum of 3000 of them
+    // is not 3000 x 1.325 in floating point, which once gave a mean off by
+    // rounding, deviations that correlate perfectly, one block, no error bar
+    std::vector<double> strain, x;
+    for (int t = 0; t < 3000; ++t)
+    {
+        strain.push_back(0.01*(t + 1));
+        x.push_back(1.325);
+    }
+    const SteadyState st(strain, x, SteadyState::Options());
+    EXPECT_NEAR(st.correlationStrain(), 0.01, 1e-12);   // 2 tau h, tau = 1/2
+    EXPECT_TRUE(st.reliable());
+    EXPECT_NEAR(st.mean(), 1.325, 1e-14);
+    EXPECT_LT(st.standardError(), 1e-14);
+}

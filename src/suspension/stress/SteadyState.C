@@ -68,9 +68,12 @@ double SteadyState::integratedCorrelation
     {
         return 0.5;
     }
+    // Shifted by the first value, so that a constant series (the Stokes
+    // part, 2.5 phi) has deviations of exactly zero, not rounding noise
+    // that correlates perfectly
     double mean = 0;
-    for (double v : x) mean += v;
-    mean /= n;
+    for (double v : x) mean += v - x[0];
+    mean = x[0] + mean/n;
     double c0 = 0;
     for (double v : x) c0 += (v - mean)*(v - mean);
     c0 /= n;
@@ -154,18 +157,20 @@ SteadyState::SteadyState
     const std::size_t first = y.size() - nUsed_;
     nDiscarded_ += first;
 
+    // Sums shifted by the first value (exact for a constant series)
+    const double y0 = y[first];
     std::vector<double> blockMean(nBlocks_, 0);
     for (std::size_t b = 0; b < nBlocks_; ++b)
     {
         double s = 0;
         for (std::size_t i = 0; i < blockLength_; ++i)
         {
-            s += y[first + b*blockLength_ + i];
+            s += y[first + b*blockLength_ + i] - y0;
         }
-        blockMean[b] = s/blockLength_;
-        mean_ += blockMean[b];
+        blockMean[b] = y0 + s/blockLength_;
+        mean_ += s/blockLength_;
     }
-    mean_ /= nBlocks_;
+    mean_ = y0 + mean_/nBlocks_;
     if (nBlocks_ > 1)
     {
         double var = 0;
