@@ -16,7 +16,8 @@ difference of independent runs:
   scheme; St = 1e-3, so overdamped, St -> 0, has the same limit within far
   less than these errors).
 
-    steady.py RUNROOT      ->  docs/speed-vs-error/steady.csv, steady.md
+    steady.py RUNROOT      ->  docs/speed-vs-error/steady.csv, steady.md and
+                               its table in docs/speed-vs-error.md
 """
 import glob
 import math
@@ -26,7 +27,7 @@ import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(here, ".."))
-from rheologydata import cpuSeconds, readRheology, readSummary  # noqa: E402
+from rheologydata import cpuSeconds, fillTables, readRheology, readSummary  # noqa: E402
 
 NAME = re.compile(r"(?P<integrator>\w+)-safety(?P<safety>[0-9.]+)"
                   r"(?:-eps(?P<eps>[0-9.eE+-]+?))?(?:-delta(?P<delta>[0-9.]+?))?"
@@ -143,7 +144,9 @@ def write(rows, fits):
                 f.write("\n%s: zero-step limit (weighted fit ηr = a + b Δt over the mean steps "
                         "of implicitEuler): a = %.4g ± %.2g, b = %.4g; χ² = %.2g for %d "
                         "degrees of freedom.\n" % ((case,) + fit))
-    print(open(os.path.join(here, "steady.md")).read())
+    table = open(os.path.join(here, "steady.md")).read()
+    print(table)
+    fillTables(os.path.join(here, "..", "speed-vs-error.md"), {"steady": table.strip()})
 
 
 def main(runRoot):

@@ -36,6 +36,7 @@ extra=() suffix=
 [ -n "${DELTA:-}" ] && { extra+=(lubrication/delta="$DELTA"); suffix+=-delta$DELTA; }
 if [ -n "${START:-}" ]; then
     # Copy the stored state in as the case's first time and start from it
+    START=$(cd "$START" && pwd) || exit 1
     startTime=${START##*/}
     suffix+=-from$startTime
     export WSF_CASE_SETUP="rm -rf 0 [1-9]* && cp -r '$START' . \

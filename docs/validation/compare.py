@@ -8,6 +8,7 @@ values, both error bars and the difference in units of the two combined
 the points present in both.
 
     docs/validation/compare.py [commit]  ->  docs/validation/compare.csv, .md
+                                             and docs/validation.md
 """
 import csv
 import io
@@ -18,6 +19,9 @@ import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
 root = os.path.dirname(os.path.dirname(here))
+sys.path.insert(0, os.path.dirname(here))
+from rheologydata import fillTables  # noqa: E402
+
 CASES = ("frictionless", "frictional", "shearThickening", "wavy", "dilute")
 
 
@@ -70,6 +74,7 @@ def main(commit):
     with open(os.path.join(here, "compare.md"), "w") as f:
         f.write("\n".join(md) + "\n")
     print("\n".join(md))
+    fillTables(os.path.join(root, "docs", "validation.md"), {"compare": "\n".join(md)})
 
 
 if __name__ == "__main__":
