@@ -137,6 +137,18 @@ def writeCsv(path, rows, columns):
     return path
 
 
+def writeRowsAndTable(stem, header, rows, md):
+    """rows (lists) as stem.csv under `header` (comma-separated names), the
+    Markdown lines md as stem.md, and md printed"""
+    with open(stem + ".csv", "w") as f:
+        f.write(header + "\n")
+        for r in rows:
+            f.write(",".join(str(x) for x in r) + "\n")
+    with open(stem + ".md", "w") as f:
+        f.write("\n".join(md) + "\n")
+    print("\n".join(md))
+
+
 def fillTables(path, sections):
     """Replace what stands between <!-- table:NAME --> and <!-- /table:NAME -->
     (or after a lone opening marker) by the table of NAME"""

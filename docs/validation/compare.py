@@ -20,7 +20,7 @@ import sys
 here = os.path.dirname(os.path.abspath(__file__))
 root = os.path.dirname(os.path.dirname(here))
 sys.path.insert(0, os.path.dirname(here))
-from rheologydata import fillTables  # noqa: E402
+from rheologydata import fillTables, writeRowsAndTable  # noqa: E402
 
 CASES = ("frictionless", "frictional", "shearThickening", "wavy", "dilute")
 
@@ -67,13 +67,8 @@ def main(commit):
         if n:
             totals.append("%s: χ² = %.1f for %d points" % (case, chi2, n))
     md.append("\n" + "; ".join(totals) + ".")
-    with open(os.path.join(here, "compare.csv"), "w") as f:
-        f.write("case,setting,x,etaR,error,etaR_before,error_before,sigmas\n")
-        for r in rows:
-            f.write(",".join(str(x) for x in r) + "\n")
-    with open(os.path.join(here, "compare.md"), "w") as f:
-        f.write("\n".join(md) + "\n")
-    print("\n".join(md))
+    writeRowsAndTable(os.path.join(here, "compare"),
+                      "case,setting,x,etaR,error,etaR_before,error_before,sigmas", rows, md)
     fillTables(os.path.join(root, "docs", "validation.md"), {"compare": "\n".join(md)})
 
 

@@ -15,7 +15,7 @@ import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.dirname(here))
-from rheologydata import readSummary  # noqa: E402
+from rheologydata import readSummary, writeRowsAndTable  # noqa: E402
 
 
 def main(runRoot):
@@ -44,13 +44,9 @@ def main(runRoot):
                             s["discarded"], s["trusted"]])
         md.append("| %s | %d | %.4g | %.3g | %.3g | %.2f | %.2f |" % (
             point, n, mu, sd, rms, ratio, ratio/math.sqrt(2*(n - 1)) if n > 1 else float("nan")))
-    with open(os.path.join(here, "seeds.csv"), "w") as f:
-        f.write("point,seed,etaR,stdError,correlationStrain,strainUsed,strainDiscarded,trusted\n")
-        for r in csvRows:
-            f.write(",".join(str(x) for x in r) + "\n")
-    with open(os.path.join(here, "seeds.md"), "w") as f:
-        f.write("\n".join(md) + "\n")
-    print("\n".join(md))
+    writeRowsAndTable(os.path.join(here, "seeds"),
+                      "point,seed,etaR,stdError,correlationStrain,strainUsed,strainDiscarded,trusted",
+                      csvRows, md)
     for r in csvRows:
         print(*r)
 
