@@ -95,7 +95,7 @@ def analyse(rows):
                 same = [b for b in own if not b["variant"]
                         and b["integrator"] == r["integrator"] and b["safety"] == r["safety"]]
                 against = same[0] if same else ref
-            r["against"] = ("" if r is ref else "%s, safety %g" % (against["integrator"], against["safety"]))
+            r["against"] = ("" if r is ref else "%s at safety %g" % (against["integrator"], against["safety"]))
             r["bias_pct"], r["bias_err_pct"] = difference(r, against) if r is not ref else (0.0, 0.0)
             if fit:
                 a, aErr = fit[0], fit[1]
