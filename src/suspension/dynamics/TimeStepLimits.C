@@ -98,41 +98,22 @@ namespace
         return 1/lambdaMax;
     }
 
-    //- Largest stable step of a spring k with dashpot gamma (explicit) on
-    //  a coordinate of inertia m with resistance zeta (implicit); see the
-    //  header. zeta = gamma = 0: the explicit spring limit 2 sqrt(m/k).
-    double modeLimit(double k, double gamma, double m, double zeta)
+    //- Largest stable step of a spring k on a coordinate of inertia m
+    //  with resistance zeta (implicit); see the header. zeta = 0: the
+    //  explicit spring limit 2 sqrt(m/k).
+    double modeLimit(double k, double m, double zeta)
     {
-        const double c = zeta - gamma;
-        double dt = (c + std::sqrt(c*c + 4*k*m))/k;
-        if (gamma > zeta)
-        {
-            dt = std::min(dt, 2*m/(gamma - zeta));
-        }
-        return dt;
+        return (zeta + std::sqrt(zeta*zeta + 4*k*m))/k;
     }
 
-    //- Directions b of the contact modes of a touching pair in the 12 dof
-    //  (n = e_x, t = e_y): the mode coordinate changes at b.v, so a spring
-    //  k on it is the force -k (b.x) b. Normal: n.(u_j - u_i); tangential
-    //  (4b): t.u_t = t.(u_j - u_i) - (a_i omega_i + a_j omega_j).(n x t);
-    //  rolling (B.1): t.u_r = a_ij (omega_i - omega_j).(t x n)
-    std::array<Eigen::Matrix<double, 12, 1>, 3> contactModeDirections
-    (
-        double ai,
-        double aj
-    )
+    //- Direction b of the normal mode of a pair in the 12 dof (n = e_x):
+    //  the mode coordinate changes at b.v = n.(u_j - u_i), so a spring k
+    //  on it is the force -k (b.x) b
+    Eigen::Matrix<double, 12, 1> normalModeDirection()
     {
-        std::array<Eigen::Matrix<double, 12, 1>, 3> b;
-        for (auto& v : b)
-        {
-            v.setZero();
-        }
-        const double aij = harmonicRadius(ai, aj);
-        b[0](0) = -1;  b[0](3) = 1;                         // normal
-        b[1](1) = -1;  b[1](4) = 1;                         // tangential
-        b[1](8) = -ai; b[1](11) = -aj;                      // n x t = e_z
-        b[2](8) = -aij; b[2](11) = aij;                     // t x n = -e_z
+        Eigen::Matrix<double, 12, 1> b = Eigen::Matrix<double, 12, 1>::Zero();
+        b(0) = -1;
+        b(3) = 1;
         return b;
     }
 
@@ -210,26 +191,18 @@ namespace
         double rho() const override { return rho_; }
         double maxVelocityGradient() const override { return maxGradU_; }
 
-        //- No inertia when overdamped, no implicit resistance when the
-        //  hydrodynamics is explicit
-        double springLimit
-        (
-            double k,
-            double gamma,
-            Mode mode,
-            double ai,
-            double aj,
-            double h
-        ) const override
+        //- A spring k on the normal mode of the pair at gap h: no inertia
+        //  when overdamped, no implicit resistance when the hydrodynamics
+        //  is explicit
+        double springLimit(double k, double ai, double aj, double h) const
         {
             const ModeInverses inv = modeInverses
             (
-                models_, ai, aj, h, rho_,
-                contactModeDirections(ai, aj)[static_cast<int>(mode)]
+                models_, ai, aj, h, rho_, normalModeDirection()
             );
             return modeLimit
             (
-                k, gamma,
+                k,
                 inertia_ ? 1/inv.inertia : 0,
                 explicit_ ? 0 : 1/inv.resistance
             );
@@ -258,7 +231,7 @@ namespace
                 Fh = Fnext;
                 if (k > 0)
                 {
-                    dt = std::min(dt, springLimit(k, 0, Mode::normal, ai, aj, h));
+                    dt = std::min(dt, springLimit(k, ai, aj, h));
                 }
             }
             return dt;
@@ -333,9 +306,7 @@ TimeStepLimits::TimeStepLimits
         {
             throw std::invalid_argument
             (
-                "TimeStepLimits: no stable step for the " + l.name
-              + " forces; overdamped, an explicit dashpot must be weaker"
-                " than the Stokes resistance of the pair"
+                "TimeStepLimits: no stable step for the " + l.name + " forces"
             );
         }
     }

@@ -80,29 +80,15 @@ std::string FrictionalContact::describe() const
 
 void FrictionalContact::addTimeStepLimits(TimeStepLimitBuilder& limits) const
 {
-    using Mode = TimeStepLimitBuilder::Mode;
+    if (!limits.explicitHydrodynamics())
+    {
+        return;
+    }
     limits.addOverPairs("contact", [&](double ai, double aj)
     {
-        if (limits.explicitHydrodynamics())
-        {
-            const double rho = limits.rho();
-            auto mass = [rho](double a) { return 4.0/3.0*pi*a*a*a*rho; };
-            return 2*contactTimeScale(p_, mass(ai), ai, mass(aj), aj)/pi;
-        }
-        // A pair in contact feels Stokes drag and, when on, lubrication
-        // at the regularised gap (A.6). Without friction (mu_C = 0) the
-        // tangential spring never pulls, and without rolling stiffness or
-        // friction neither does the rolling one
-        double dt = limits.springLimit(p_.kn, p_.gammaN, Mode::normal, ai, aj, 0);
-        if (p_.muC > 0)
-        {
-            dt = std::min(dt, limits.springLimit(p_.kt, 0, Mode::tangential, ai, aj, 0));
-        }
-        if (p_.kr > 0 && muR_ > 0)
-        {
-            dt = std::min(dt, limits.springLimit(p_.kr, 0, Mode::rolling, ai, aj, 0));
-        }
-        return dt;
+        const double rho = limits.rho();
+        auto mass = [rho](double a) { return 4.0/3.0*pi*a*a*a*rho; };
+        return 2*contactTimeScale(p_, mass(ai), ai, mass(aj), aj)/pi;
     });
 }
 
