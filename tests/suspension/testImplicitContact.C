@@ -643,6 +643,98 @@ TEST(ImplicitContact, SlidingContactStaysOnTheCoulombCap)
 }
 
 
+TEST(ImplicitContact, SlidingFrictionLimitIsTheChatterThresholdOfASlidingContact)
+{
+    // The Coulomb force of a sliding stretch is explicit (k_t = 0 in the
+    // step). A pair held by +-F at its equilibrium overlap, its stretch on
+    // the cap and nothing driving it: overdamped, that force moves it back
+    // along the tangential mode b, the stretch becomes xi (1 - dt k_t
+    // b.R^-1 b), which sticks again within the cap only for dt < t_s =
+    // 2/(k_t b.R^-1 b). slidingFriction is 5 t_s, so the default safety
+    // 0.2 steps at t_s: below it the friction relaxes, above it flips from
+    // cap to cap every step (chatter)
+    auto limit = [](const TimeStepLimits& l, const std::string& name)
+    {
+        for (const TimeStepLimit& t : l.all())
+        {
+            if (t.name == name)
+            {
+                return t.value;
+            }
+        }
+        return -1.0;
+    };
+    const ForceModels models = tableOne(1.0);
+    const FrictionalContact::Params& c = springs(models);
+    const Mat12 R = pairResistance(models);
+    const double ts = explicitContactLimit(R, tangentialMode(), c.kt, 0, false);
+
+    const TimeStepLimits limits(models, 1.0, 1.0, rho, 0.2, Integrator::overdamped, 1.0);
+    EXPECT_NEAR(limit(limits, "slidingFriction"), 5*ts, 1e-6*ts);
+    EXPECT_EQ(limits.binding().name, "slidingFriction");
+    EXPECT_NEAR(limits.deltaT(), ts, 1e-6*ts);
+
+    const double cap = c.muC*F/c.kt;
+    const double hEq = -F/c.kn;
+    const PairRun relaxes =
+        heldPair(models, false, hEq, Vec3(0, cap, 0), 0, 0.9*ts, 6);
+    EXPECT_NEAR(std::abs(relaxes.Ft[0]), 0.8*c.muC*F, 1e-2*c.muC*F);
+    EXPECT_LT(std::abs(relaxes.Ft.back()), 0.05*c.muC*F);
+    const PairRun chatters =
+        heldPair(models, false, hEq, Vec3(0, cap, 0), 0, 1.1*ts, 6);
+    for (std::size_t k = 0; k < chatters.Ft.size(); ++k)
+    {
+        // On the cap, to round-off, of a load that stays
+        EXPECT_NEAR(std::abs(chatters.Ft[k]), c.muC*std::abs(chatters.Fn[k]), 1e-12*F)
+            << "step " << k;
+        EXPECT_GT(chatters.Fn[k], 0.98*F) << "step " << k;
+        if (k > 0)
+        {
+            EXPECT_LT(chatters.Ft[k]*chatters.Ft[k - 1], 0) << "step " << k;
+        }
+    }
+
+    // With inertia the Jury bound of the same mode; the rolling spring's
+    // when it is stiffer
+    const TimeStepLimits inertial(models, 1.0, 1.0, rho, 0.2, Integrator::implicitEuler, 1.0);
+    EXPECT_NEAR
+    (
+        limit(inertial, "slidingFriction"),
+        5*explicitContactLimit(R, tangentialMode(), c.kt, 0, true),
+        1e-6*ts
+    );
+    FrictionalContact::Params rolling = c;
+    rolling.kr = 10*c.kt;
+    ForceModels withRollingFriction = models;
+    withRollingFriction.set(FrictionalContact(rolling));
+    Vec12 rollingMode = Vec12::Zero();
+    rollingMode(8) = -1;
+    rollingMode(11) = 1;
+    EXPECT_NEAR
+    (
+        limit
+        (
+            TimeStepLimits(withRollingFriction, 1.0, 1.0, rho, 0.2, Integrator::overdamped, 1.0),
+            "slidingFriction"
+        ),
+        5*explicitContactLimit(R, rollingMode, rolling.kr, 0, false),
+        1e-6*ts
+    );
+
+    // Frictionless, every contact force is implicit: no such limit, the
+    // lubrication gap binds; the explicit integrator has its contact limit
+    for (const Integrator integrator : {Integrator::implicitEuler, Integrator::overdamped})
+    {
+        const TimeStepLimits frictionless(tableOne(0.0), 1.0, 1.4, rho, 0.2, integrator, 1.0);
+        EXPECT_EQ(limit(frictionless, "slidingFriction"), -1.0);
+        EXPECT_EQ(frictionless.binding().name, "lubricationGap");
+    }
+    const TimeStepLimits explicitLimits(models, 1.0, 1.4, rho, 0.2, Integrator::velocityVerlet, 1.0);
+    EXPECT_EQ(limit(explicitLimits, "slidingFriction"), -1.0);
+    EXPECT_GT(limit(explicitLimits, "contact"), 0);
+}
+
+
 TEST(ImplicitContact, PairAcrossTheShearedBoundaryMovesAsUnwrapped)
 {
     // A touching pair carried by the shear flow loads its springs through

@@ -106,14 +106,33 @@ namespace
         return (zeta + std::sqrt(zeta*zeta + 4*k*m))/k;
     }
 
-    //- Direction b of the normal mode of a pair in the 12 dof (n = e_x):
-    //  the mode coordinate changes at b.v = n.(u_j - u_i), so a spring k
-    //  on it is the force -k (b.x) b
-    Eigen::Matrix<double, 12, 1> normalModeDirection()
+    //- Direction b of a contact mode of a touching pair in the 12 dof
+    //  (n = e_x, t = e_y): the mode coordinate changes at b.v, so a spring
+    //  k on it is the force -k (b.x) b. Normal: n.(u_j - u_i); tangential
+    //  (4b, 5): t.u_t = t.(u_j - u_i) - (a_i omega_i + a_j omega_j).(n x t);
+    //  rolling (B.1): t.u_r = a_ij (omega_i - omega_j).(t x n)
+    Eigen::Matrix<double, 12, 1> modeDirection
+    (
+        TimeStepLimitBuilder::Mode mode,
+        double ai,
+        double aj
+    )
     {
         Eigen::Matrix<double, 12, 1> b = Eigen::Matrix<double, 12, 1>::Zero();
-        b(0) = -1;
-        b(3) = 1;
+        switch (mode)
+        {
+            case TimeStepLimitBuilder::Mode::normal:
+                b(0) = -1;  b(3) = 1;
+                break;
+            case TimeStepLimitBuilder::Mode::tangential:
+                b(1) = -1;  b(4) = 1;
+                b(8) = -ai; b(11) = -aj;                // n x t = e_z
+                break;
+            case TimeStepLimitBuilder::Mode::rolling:
+                b(8) = -harmonicRadius(ai, aj);         // t x n = -e_z
+                b(11) = harmonicRadius(ai, aj);
+                break;
+        }
         return b;
     }
 
@@ -191,14 +210,20 @@ namespace
         double rho() const override { return rho_; }
         double maxVelocityGradient() const override { return maxGradU_; }
 
-        //- A spring k on the normal mode of the pair at gap h: no inertia
-        //  when overdamped, no implicit resistance when the hydrodynamics
-        //  is explicit
-        double springLimit(double k, double ai, double aj, double h) const
+        //- No inertia when overdamped, no implicit resistance when the
+        //  hydrodynamics is explicit
+        double springLimit
+        (
+            double k,
+            Mode mode,
+            double ai,
+            double aj,
+            double h
+        ) const override
         {
             const ModeInverses inv = modeInverses
             (
-                models_, ai, aj, h, rho_, normalModeDirection()
+                models_, ai, aj, h, rho_, modeDirection(mode, ai, aj)
             );
             return modeLimit
             (
@@ -231,7 +256,7 @@ namespace
                 Fh = Fnext;
                 if (k > 0)
                 {
-                    dt = std::min(dt, springLimit(k, ai, aj, h));
+                    dt = std::min(dt, springLimit(k, Mode::normal, ai, aj, h));
                 }
             }
             return dt;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace suspension
@@ -80,15 +81,37 @@ std::string FrictionalContact::describe() const
 
 void FrictionalContact::addTimeStepLimits(TimeStepLimitBuilder& limits) const
 {
-    if (!limits.explicitHydrodynamics())
+    using Mode = TimeStepLimitBuilder::Mode;
+    if (limits.explicitHydrodynamics())
+    {
+        limits.addOverPairs("contact", [&](double ai, double aj)
+        {
+            const double rho = limits.rho();
+            auto mass = [rho](double a) { return 4.0/3.0*pi*a*a*a*rho; };
+            return 2*contactTimeScale(p_, mass(ai), ai, mass(aj), aj)/pi;
+        });
+        return;
+    }
+
+    // Implicit: the sliding stretches' explicit Coulomb forces (Description)
+    const bool sliding = p_.muC > 0;
+    const bool rolling = p_.kr > 0 && muR_ > 0;
+    if (!sliding && !rolling)
     {
         return;
     }
-    limits.addOverPairs("contact", [&](double ai, double aj)
+    limits.addOverPairs("slidingFriction", [&](double ai, double aj)
     {
-        const double rho = limits.rho();
-        auto mass = [rho](double a) { return 4.0/3.0*pi*a*a*a*rho; };
-        return 2*contactTimeScale(p_, mass(ai), ai, mass(aj), aj)/pi;
+        double dt = std::numeric_limits<double>::infinity();
+        if (sliding)
+        {
+            dt = limits.springLimit(p_.kt, Mode::tangential, ai, aj, 0);
+        }
+        if (rolling)
+        {
+            dt = std::min(dt, limits.springLimit(p_.kr, Mode::rolling, ai, aj, 0));
+        }
+        return slidingFrictionFactor*dt;
     });
 }
 
