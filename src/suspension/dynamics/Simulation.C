@@ -32,18 +32,6 @@ namespace
 }
 
 
-double Simulation::defaultMaxDisplacement(Integrator integrator)
-{
-    return integrator == Integrator::velocityVerlet ? 0 : 0.002;
-}
-
-
-double Simulation::defaultMaxOverlapChange(Integrator integrator)
-{
-    return integrator == Integrator::velocityVerlet ? 0 : 1e-4;
-}
-
-
 Simulation::Simulation
 (
     Particles particles,
@@ -68,19 +56,10 @@ Simulation::Simulation
     limits_(makeLimits(forces_.models(), particles_, flow, params)),
     dtMax_(params.deltaT > 0 ? params.deltaT : limits_.deltaT()),
     aMin_(*std::min_element(particles_.a.begin(), particles_.a.end())),
-    maxDisplacement_
-    (
-        params.maxDisplacement.value_or(defaultMaxDisplacement(params.integrator))
-    ),
-    maxOverlapChange_
-    (
-        params.maxOverlapChange.value_or(defaultMaxOverlapChange(params.integrator))
-    ),
     stepLimitCounts_
     {
         {params.deltaT > 0 ? "deltaT" : limits_.binding().name, 0},
-        {"maxDisplacement", 0},
-        {"maxOverlapChange", 0}
+        {"maxDisplacement", 0}
     },
     time_(0),
     steps_(0)
@@ -88,20 +67,18 @@ Simulation::Simulation
     if
     (
         !(params.skin >= 0) || !(params.maxOverlap > 0)
-     || !(maxDisplacement_ >= 0) || !(maxOverlapChange_ >= 0)
+     || !(params.maxDisplacement >= 0)
     )
     {
         throw std::invalid_argument
         (
-            "Simulation: need skin >= 0, maxOverlap > 0, maxDisplacement"
-            " >= 0 and maxOverlapChange >= 0; got skin "
-          + std::to_string(params.skin)
+            "Simulation: need skin >= 0, maxOverlap > 0 and maxDisplacement"
+            " >= 0; got skin " + std::to_string(params.skin)
           + ", maxOverlap " + std::to_string(params.maxOverlap)
-          + ", maxDisplacement " + std::to_string(maxDisplacement_)
-          + ", maxOverlapChange " + std::to_string(maxOverlapChange_)
+          + ", maxDisplacement " + std::to_string(params.maxDisplacement)
         );
     }
-    if (!std::isfinite(dtMax_) && maxDisplacement_ == 0)
+    if (!std::isfinite(dtMax_) && params.maxDisplacement == 0)
     {
         throw std::invalid_argument
         (
@@ -287,7 +264,7 @@ std::pair<double, std::size_t> Simulation::stepBound() const
             bound = {value, limit};
         }
     };
-    if (maxDisplacement_ > 0)
+    if (params_.maxDisplacement > 0)
     {
         const std::vector<FlowSample>& ambient = forces_.ambient();
         double uMax = 0;
@@ -297,12 +274,8 @@ std::pair<double, std::size_t> Simulation::stepBound() const
         }
         if (uMax > 0)
         {
-            tighten(maxDisplacement_*aMin_/uMax, 1);
+            tighten(params_.maxDisplacement*aMin_/uMax, 1);
         }
-    }
-    if (maxOverlapChange_ > 0 && summary_.maxOverlapRate > 0)
-    {
-        tighten(maxOverlapChange_*aMin_/summary_.maxOverlapRate, 2);
     }
     return bound;
 }

@@ -191,7 +191,6 @@ void ForceField::countContact
 (
     BlockStats& stats,
     const PairGeometry& g,
-    const Vec3& du,
     std::int64_t idI,
     std::int64_t idJ
 )
@@ -204,7 +203,6 @@ void ForceField::countContact
         stats.pair[0] = idI;
         stats.pair[1] = idJ;
     }
-    stats.maxOverlapRate = std::max(stats.maxOverlapRate, std::abs(g.n.dot(du)));
 }
 
 
@@ -235,7 +233,6 @@ void ForceField::nearPass
         // No model here: the contacts are still counted (Simulation's
         // checks of the overlap need them)
         const std::size_t N = p.size();
-        const double imageVelocity = box.imageVelocity();
         if (out.contacts)
         {
             out.contacts->clear();
@@ -251,14 +248,13 @@ void ForceField::nearPass
                 {
                     const std::uint32_t j = near.j[k];
                     Vec3 r = p.x[j] - p.x[i];
-                    const int image = box.minimumImage(r);
+                    box.minimumImage(r);
                     const double R = p.a[i] + p.a[j];
                     if (r.squaredNorm() < R*R)
                     {
                         countContact
                         (
                             stats, PairGeometry::make(r, p.a[i], p.a[j]),
-                            p.u[j] + image*imageVelocity*Vec3::UnitX() - p.u[i],
                             p.id[i], p.id[j]
                         );
                     }
@@ -350,7 +346,7 @@ void ForceField::nearPass
                     const Vec3 du = p.u[j] + jump - p.u[i];
                     if (g.h < 0)
                     {
-                        countContact(stats, g, du, p.id[i], p.id[j]);
+                        countContact(stats, g, p.id[i], p.id[j]);
                     }
 
                     PairForce total;
@@ -674,7 +670,7 @@ ForceSummary ForceField::run
     wRel_.resize(N);
     E_.resize(N);
     blockS_.assign(nB*nC, Mat3::Zero());
-    blockStats_.assign(nB, BlockStats{0, 0, {-1, -1}, 0});
+    blockStats_.assign(nB, BlockStats{0, 0, {-1, -1}});
     if (out.F) out.F->resize(N);
     if (out.T) out.T->resize(N);
     if (out.S) out.S->resize(N);
@@ -765,7 +761,6 @@ ForceSummary ForceField::run
             summary.maxOverlapPair[0] = s.pair[0];
             summary.maxOverlapPair[1] = s.pair[1];
         }
-        summary.maxOverlapRate = std::max(summary.maxOverlapRate, s.maxOverlapRate);
     }
     return summary;
 }

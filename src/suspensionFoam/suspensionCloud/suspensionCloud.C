@@ -279,10 +279,7 @@ void Foam::suspensionCloud::reportStart() const
         << "    outer step   " << interval;
     if (sim.adaptive())
     {
-        Info<< " >= " << outerSteps << " steps, each also bounded by"
-            << " maxDisplacement " << sim.maxDisplacement()
-            << " and maxOverlapChange " << sim.maxOverlapChange()
-            << " (a_min per step; 0: off)";
+        Info<< " >= " << outerSteps << " steps";
     }
     else if (outerSteps > 1 && lastStep < sim.deltaT()*(1 - 1e-9))
     {

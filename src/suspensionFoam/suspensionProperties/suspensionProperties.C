@@ -4,8 +4,6 @@
 #include "Enum.H"
 #include "Time.H"
 
-#include <optional>
-
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
 const Foam::word Foam::suspensionProperties::dictName("suspensionProperties");
@@ -45,7 +43,7 @@ suspension::Simulation::Params readIntegration
         dict,
         {
             "integrator", "deltaT", "safety", "skin", "stencil", "maxOverlap",
-            "maxDisplacement", "maxOverlapChange", "solver"
+            "maxDisplacement", "solver"
         }
     );
 
@@ -79,33 +77,10 @@ suspension::Simulation::Params readIntegration
     p.skin = getScalarIn(dict, "skin", interval::nonNegative());
     p.stencil = getEnum(dict, "stencil", stencils);
     p.maxOverlap = getScalarIn(dict, "maxOverlap", interval::positive());
-    // Accuracy bounds of the adaptive steps: a value, 'off', or absent
-    // (the integrator's default, Simulation::defaultMaxDisplacement ...)
-    auto readBound = [&dict](const word& name) -> std::optional<double>
-    {
-        if (!dict.found(name, keyType::LITERAL))
-        {
-            return std::nullopt;
-        }
-        ITstream& is = dict.lookup(name);
-        const token t(is);
-        if (t.isWord() && t.wordToken() == "off")
-        {
-            return 0.0;
-        }
-        if (t.isNumber() && interval::positive().contains(t.number()))
-        {
-            return t.number();
-        }
-        FatalIOErrorInFunction(dict)
-            << "Entry '" << name << "' = " << t << " in dictionary "
-            << dict.name() << " must be 'off' or a bound in "
-            << interval::positive() << " (absent: the integrator's default)"
-            << nl << exit(FatalIOError);
-        return std::nullopt;
-    };
-    p.maxDisplacement = readBound("maxDisplacement");
-    p.maxOverlapChange = readBound("maxOverlapChange");
+    p.maxDisplacement = getScalarInOrDefault
+    (
+        dict, "maxDisplacement", p.maxDisplacement, interval::positive()
+    );
 
     // CG of the implicit integrators; read only by them, as the entries of
     // a model that is off
@@ -128,16 +103,6 @@ suspension::Simulation::Params readIntegration
         }
     }
     return p;
-}
-
-
-//- An accuracy bound for the log: its value, 'off', with '(default)'
-//  when the case leaves it to the integrator
-string bound(const std::optional<double>& value, const double defaultValue)
-{
-    const double v = value.value_or(defaultValue);
-    return (v > 0 ? string(Foam::name(v)) : string("off"))
-         + (value ? "" : " (default)");
 }
 
 
@@ -239,10 +204,8 @@ void Foam::suspensionProperties::report(Ostream& os) const
         << (s.deltaT > 0 ? Foam::name(s.deltaT) : word("auto"))
         << ", safety " << s.safety << ", skin " << s.skin << ", stencil "
         << stencils.get(s.stencil) << ", maxOverlap " << s.maxOverlap
-        << nl << "                 maxDisplacement "
-        << bound(s.maxDisplacement, suspension::Simulation::defaultMaxDisplacement(s.integrator))
-        << ", maxOverlapChange "
-        << bound(s.maxOverlapChange, suspension::Simulation::defaultMaxOverlapChange(s.integrator))
+        << ", maxDisplacement "
+        << (s.maxDisplacement > 0 ? Foam::name(s.maxDisplacement) : word("off"))
         << nl;
     if (s.integrator != suspension::Integrator::velocityVerlet)
     {
