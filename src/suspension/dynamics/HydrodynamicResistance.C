@@ -110,6 +110,46 @@ namespace
         yj << f, -c.aj*nxt + nxr;
     }
 
+    //- (dt K + Gamma) of a pair in contact applied to its velocities xi,
+    //  xj: B^T diag(c_n, c_t, c_r) B, its rows of i (yi) and of j (yj).
+    //  The tangential and rolling modes only where their springs act (a
+    //  frictionless or sliding contact has c_t = 0, no rolling c_r = 0)
+    inline void contactProduct
+    (
+        const HydrodynamicResistance::Contact& c,
+        const Vec6& xi,
+        const Vec6& xj,
+        Vec6& yi,
+        Vec6& yj
+    )
+    {
+        const Vec3 du = xj.head<3>() - xi.head<3>();
+        const double un = c.n.dot(du);
+        Vec3 f = (c.cn*un)*c.n;
+        Vec3 Ti = Vec3::Zero();
+        Vec3 Tj = Vec3::Zero();
+        if (c.ct != 0)
+        {
+            const Vec3 st = c.ct*
+            (
+                du - un*c.n - (c.ai*xi.tail<3>() + c.aj*xj.tail<3>()).cross(c.n)
+            );
+            f += st;
+            const Vec3 nxt = c.n.cross(st);
+            Ti = -c.ai*nxt;
+            Tj = -c.aj*nxt;
+        }
+        if (c.cr != 0)
+        {
+            const Vec3 sr = (c.cr*c.aij)*c.n.cross(xi.tail<3>() - xj.tail<3>());
+            const Vec3 nxr = c.aij*c.n.cross(sr);
+            Ti -= nxr;
+            Tj += nxr;
+        }
+        yi << -f, Ti;
+        yj << f, Tj;
+    }
+
     //- Diagonal 6 x 6 block of B^T diag(kn, kt, kr) B of sphere i
     //  (side = -1, radius a_i) or j (side = 1, radius a_j) of a pair
     Block contactSelfBlock
@@ -454,11 +494,10 @@ void HydrodynamicResistance::apply(const Vector& x, Vector& y) const
             for (std::uint32_t s = contactIndex_.offset[i]; s < contactIndex_.offset[i + 1]; ++s)
             {
                 const Contact& c = contacts_[s];
-                const Modes m = contactModes(c, xi, x.segment<6>(6*contactIndex_.j[s]));
                 Vec6 rowsI;
-                contactTranspose
+                contactProduct
                 (
-                    c, Modes{c.cn*m.n, c.ct*m.t, c.cr*m.r}, rowsI, contactRows_[s]
+                    c, xi, x.segment<6>(6*contactIndex_.j[s]), rowsI, contactRows_[s]
                 );
                 yi += rowsI;
             }
