@@ -173,26 +173,17 @@ namespace
         return (p.x[1] - p.x[0]).norm() - p.a[0] - p.a[1];
     }
 
-    //- Gaps and tangential forces of a pair after each step
-    struct PairTrajectory
-    {
-        std::vector<double> gap;
-        std::vector<double> tangentialForce;    // e_y.F on sphere 1
-    };
-
     //- Two spheres of radius 1 at gap h0 along e_x, pushed together by +-F
-    //  along their line of centres and, in the first step only, sheared by
-    //  +-G along e_y; stepped by the implicit integrator with the models'
-    //  explicit forces
-    PairTrajectory pushedPair
+    //  along their line of centres, stepped by the implicit integrator
+    //  with the models' other forces; the gap after each step
+    std::vector<double> pushedPair
     (
         const ForceModels& models,
         bool inertia,
         double F,
         double h0,
         double dt,
-        int steps,
-        double G = 0
+        int steps
     )
     {
         LeesEdwardsBox box(Vec3(20, 20, 20), 0.0);
@@ -206,31 +197,30 @@ namespace
         PairList pairs;
         search.rebuild(p, box, pairs);
 
-        auto evaluate = [&](double dtContact, double shear)
+        std::vector<LinearisedContact> contacts;
+        auto evaluate = [&](double dtContact)
         {
             ForceSummary summary = forces.advance
             (
                 p, box, flow, pairs, search.far(), dtContact,
-                ForceField::Forces::nonHydrodynamic
+                ForceField::Forces::nonHydrodynamic, &contacts
             );
             const Vec3 n = (p.x[1] - p.x[0]).normalized();
-            const Vec3 t(0, 1, 0);
-            p.F[0] += F*n - shear*t;
-            p.F[1] -= F*n - shear*t;
-            implicit.evaluate(p, box, forces.ambient(), pairs, summary);
+            p.F[0] += F*n;
+            p.F[1] -= F*n;
+            implicit.evaluate(p, box, forces.ambient(), pairs, contacts, summary);
         };
 
-        PairTrajectory trajectory;
-        evaluate(0, G);
+        std::vector<double> h;
+        evaluate(0);
         for (int k = 0; k < steps; ++k)
         {
             implicit.solve(p, forces.ambient(), dt);
             ImplicitEuler::move(p, box, dt);
-            evaluate(dt, 0);
-            trajectory.gap.push_back(gap(p));
-            trajectory.tangentialForce.push_back(p.F[1].y());
+            evaluate(dt);
+            h.push_back(gap(p));
         }
-        return trajectory;
+        return h;
     }
 
     //- Classical RK4 for y' = f(y), n steps of dt
@@ -271,9 +261,11 @@ TEST(Implicit, MatrixFreeProductEqualsDenseAssembly)
     Eigen::VectorXd x(n);
     for (int k = 0; k < n; ++k) x(k) = normal(gen);
 
-    for (const double invDt : {0.0, 1e4})
+    for (const bool inertia : {false, true})
     {
-        R.setInertia(s.p, invDt);
+        const double dt = 1e-4;
+        const double invDt = inertia ? 1/dt : 0;
+        R.setStep(s.p, dt, inertia);
         const Eigen::MatrixXd A = s.denseA(invDt);
         Eigen::VectorXd y;
         R.apply(x, y);
@@ -306,7 +298,7 @@ TEST(Implicit, ResistanceGivesTheForcesAndStressOfTheExplicitPairLoop)
     RandomBox s(4);
     ImplicitEuler implicit(s.models, true, ConjugateGradient::Params());
     ForceSummary summary;
-    implicit.evaluate(s.p, s.box, s.ambient, s.pairs, summary);
+    implicit.evaluate(s.p, s.box, s.ambient, s.pairs, {}, summary);
 
     Particles q = s.p;
     PairList pairs = s.pairs;
@@ -316,7 +308,7 @@ TEST(Implicit, ResistanceGivesTheForcesAndStressOfTheExplicitPairLoop)
 
     HydrodynamicResistance R(s.models.drag(), s.models.get<Lubrication>());
     R.assemble(s.p, s.box, s.ambient, s.pairs);
-    R.setInertia(s.p, 0);
+    R.setStep(s.p, 1, false);
     Eigen::VectorXd RV;
     R.apply(s.stack(s.p.u, s.p.omega, true), RV);
     const Eigen::VectorXd F = R.ambientForces() - RV;
@@ -348,7 +340,7 @@ TEST(Implicit, SolvedVelocitiesSatisfyTheDenseResistanceEquations)
         cg.tolerance = 1e-8;
         ImplicitEuler implicit(s.models, inertia, cg);
         ForceSummary summary;
-        implicit.evaluate(s.p, s.box, s.ambient, s.pairs, summary);
+        implicit.evaluate(s.p, s.box, s.ambient, s.pairs, {}, summary);
         implicit.solve(s.p, s.ambient, dt);
         EXPECT_TRUE(implicit.statistics().converged);
         EXPECT_GT(implicit.statistics().iterations, 5u);
@@ -420,7 +412,7 @@ TEST(Implicit, SqueezeIsStableFarBeyondTheExplicitLimitAndFollowsTheOde)
         {
             const int steps = 10*stepsPerOutput;
             const std::vector<double> h =
-                pushedPair(models, inertia, F, h0, duration/steps, steps).gap;
+                pushedPair(models, inertia, F, h0, duration/steps, steps);
 
             // Stable: the gap closes monotonically, no oscillation
             for (int k = 1; k < steps; ++k)
@@ -461,9 +453,11 @@ TEST(Implicit, LoneSphereInWavyFlowMovesWithFaxenVelocity)
         Particles p;
         p.add(Vec3(2, 3.1, 4), a, rho, 0);
         // Converged to the velocities of the last step within the CG
-        // tolerance, the warm start is kept: solve tighter than tested
+        // tolerance, the warm start is kept: solve tighter than tested.
+        // The contact springs are implicit and set no step: 200 steps
         Simulation::Params params = simParams(integrator);
         params.solver.tolerance = 1e-12;
+        params.deltaT = 1e-4;
         Simulation sim(p, box, flow, models, params);
         sim.start(0);
         sim.advance(0.02);     // ~ 60 drag relaxation times
@@ -569,126 +563,12 @@ TEST(Implicit, IndependentOfThreadCount)
 }
 
 
-TEST(Implicit, ContactStepLimitIsTheStabilityEdge)
-{
-    // Two spheres held in contact by +-F, started 10% off the equilibrium
-    // overlap F/k_n: stable just below the implicit limit, unstable just
-    // above; Stokes drag and lubrication set no limit. Frictional without
-    // lubrication; and frictionless with lubrication, where the normal mode
-    // sees X^A at the regularised gap and the limit is ~100 times larger.
-    ForceModels frictional;
-    frictional.set(FrictionalContact(FrictionalContact::fromGroups(4e5, 2.0/7.0, 1e-7, 1.0)));
-    ForceModels lubricated;
-    lubricated.set(FrictionalContact(FrictionalContact::fromGroups(4e5, 2.0/7.0, 1e-7, 0.0)));
-    Lubrication::Params lub;
-    lub.epsilon = 1e-3;
-    lub.deltaLub = 0.05;
-    lubricated.set(Lubrication(lub));
-
-    const double F = 100;
-    const double overlap = F/frictional.get<FrictionalContact>()->params().kn;
-    const double frictionalLimit =
-        TimeStepLimits(frictional, 1.0, 1.0, rho, 1.0, Integrator::overdamped).binding().value;
-
-    for (const ForceModels& models : {frictional, lubricated})
-    for (const Integrator integrator : {Integrator::implicitEuler, Integrator::overdamped})
-    {
-        const TimeStepLimits limits(models, 1.0, 1.0, rho, 1.0, integrator);
-        ASSERT_EQ(limits.all().size(), 1u);
-        ASSERT_EQ(limits.binding().name, "contact");
-
-        // Largest distance from the equilibrium over the last 50 of 100 steps
-        auto deviation = [&](double factor)
-        {
-            const std::vector<double> h = pushedPair
-            (
-                models, integrator == Integrator::implicitEuler, F,
-                -1.1*overlap, factor*limits.binding().value, 100
-            ).gap;
-            double d = 0;
-            for (int k = 50; k < 100; ++k)
-            {
-                d = std::max(d, std::abs(h[k] + overlap));
-            }
-            return d;
-        };
-        EXPECT_LT(deviation(0.9), 0.1*overlap);
-        EXPECT_GT(deviation(1.1), overlap);
-        if (models.get<Lubrication>())
-        {
-            EXPECT_GT(limits.binding().value, 100*frictionalLimit);
-        }
-    }
-}
-
-
-TEST(Implicit, TangentialContactLimitIncludesLubricationAndIsTheStabilityEdge)
-{
-    // A frictional pair with lubrication held at its equilibrium overlap
-    // by +-F and sheared for one step: the tangential spring then relaxes
-    // against Stokes drag and the tangential lubrication (Y^A, Y^B, Y^C at
-    // the regularised gap). Overdamped the mode is one relaxation and the
-    // limit 2/(k_t b.R^-1 b) is exact: the tangential force decays just
-    // below it and grows just above (measured: 10x the dry limit
-    // overdamped, 3x with inertia, for eps = 1e-3).
-    ForceModels models;
-    models.set(FrictionalContact(FrictionalContact::fromGroups(4e5, 2.0/7.0, 1e-7, 1.0)));
-    models.set(Lubrication(lubricationParams(1e-3, 0.05)));
-    ForceModels dry;
-    dry.set(*models.get<FrictionalContact>());
-
-    const double F = 100;
-    const double overlap = F/models.get<FrictionalContact>()->params().kn;
-    for (const Integrator integrator : {Integrator::overdamped, Integrator::implicitEuler})
-    {
-        const TimeStepLimits limits(models, 1.0, 1.0, rho, 1.0, integrator);
-        const TimeStepLimits dryLimits(dry, 1.0, 1.0, rho, 1.0, integrator);
-        const double dt = limits.binding().value;
-        // The tangential lubrication stiffens the mode's resistance
-        EXPECT_GT(dt, 1.5*dryLimits.binding().value);
-
-        auto run = [&](double factor)
-        {
-            return pushedPair
-            (
-                models, integrator == Integrator::implicitEuler, F,
-                -overlap, factor*dt, 100, 1.0
-            );
-        };
-        for (const double factor : {0.9, 1.1})
-        {
-            const PairTrajectory t = run(factor);
-            const double first = std::abs(t.tangentialForce[0]);
-            double last = 0;
-            double normal = 0;
-            for (int k = 50; k < 100; ++k)
-            {
-                last = std::max(last, std::abs(t.tangentialForce[k]));
-                normal = std::max(normal, std::abs(t.gap[k] + overlap));
-            }
-            EXPECT_GT(first, 0);
-            if (factor < 1)
-            {
-                EXPECT_LT(last, 0.1*first);
-                EXPECT_LT(normal, 0.01*overlap);
-            }
-            else
-            {
-                // Grows to the Coulomb cap mu_C F; with inertia the
-                // one-mode estimate is also within 10% of the edge
-                EXPECT_GT(last, 10*first);
-            }
-        }
-    }
-}
-
-
 TEST(Implicit, LubricationGapBoundsTheImplicitStepForSmallEpsilon)
 {
-    // Frictionless contacts with lubrication: at eps = 1e-4 the contact
-    // limit (which grows as 1/eps with X^A) exceeds the accuracy bound
-    // 25 eps/G, which then binds; it scales with eps/G, and neither the
-    // explicit integrator nor a flow without gradient has it
+    // Contacts with lubrication: the contact springs are implicit and set
+    // no limit, so the accuracy bound 25 eps/G binds; it scales with
+    // eps/G, and neither the explicit integrator nor a flow without
+    // gradient has it
     auto models = [](double eps)
     {
         ForceModels m;
@@ -712,15 +592,28 @@ TEST(Implicit, LubricationGapBoundsTheImplicitStepForSmallEpsilon)
     const TimeStepLimits small(models(1e-4), 1.0, 1.4, rho, 0.2, implicit, 1.0);
     EXPECT_EQ(small.binding().name, "lubricationGap");
     EXPECT_DOUBLE_EQ(small.binding().value, 25*1e-4);
-    EXPECT_GT(limit(small, "contact"), small.binding().value);
+    EXPECT_EQ(limit(small, "contact"), -1.0);
 
     const TimeStepLimits wavy(models(1e-4), 1.0, 1.4, rho, 0.2, implicit, 4.0);
     EXPECT_DOUBLE_EQ(limit(wavy, "lubricationGap"), 25*1e-4/4);
 
-    // At the paper's eps = 1e-3 the contact limit still binds (unchanged
-    // Table 1 steps)
-    const TimeStepLimits paper(models(1e-3), 1.0, 1.4, rho, 0.2, implicit, 1.0);
-    EXPECT_EQ(paper.binding().name, "contact");
+    // At the paper's eps = 1e-3 too, overdamped as well; the explicit
+    // integrator keeps its contact limit
+    for (const Integrator integrator : {implicit, Integrator::overdamped})
+    {
+        const TimeStepLimits paper(models(1e-3), 1.0, 1.4, rho, 0.2, integrator, 1.0);
+        EXPECT_EQ(paper.binding().name, "lubricationGap");
+        EXPECT_EQ(limit(paper, "contact"), -1.0);
+    }
+    EXPECT_GT
+    (
+        limit
+        (
+            TimeStepLimits(models(1e-3), 1.0, 1.4, rho, 0.2, Integrator::velocityVerlet, 1.0),
+            "contact"
+        ),
+        0
+    );
 
     EXPECT_EQ(limit(TimeStepLimits(models(1e-4), 1.0, 1.4, rho, 0.2, implicit, 0.0), "lubricationGap"), -1.0);
     EXPECT_EQ
@@ -750,6 +643,7 @@ TEST(Implicit, AdaptiveStepsBoundTheDisplacementAndLandOnTheInterval)
     p.omega[0] = f.Omega();
 
     Simulation::Params params = simParams(Integrator::overdamped);
+    params.maxDisplacement = 0;
     EXPECT_THROW
     (
         Simulation(p, LeesEdwardsBox(L, 1.0), flow, ForceModels(), params),
@@ -764,4 +658,7 @@ TEST(Implicit, AdaptiveStepsBoundTheDisplacementAndLandOnTheInterval)
     EXPECT_EQ(sim.time(), 0.5);
     EXPECT_EQ(sim.steps(), static_cast<std::uint64_t>(std::ceil(0.5/bound)));
     EXPECT_GT(sim.steps(), 10u);
+    ASSERT_EQ(sim.stepLimitCounts().size(), 2u);
+    EXPECT_EQ(sim.stepLimitCounts()[1].name, "maxDisplacement");
+    EXPECT_EQ(sim.stepLimitCounts()[1].steps, sim.steps());
 }

@@ -68,6 +68,112 @@ namespace
            -c.YB.ji*nxui - c.YB.jj*nxuj + c.YC.ji*wiT + c.YC.jj*wjT;
     }
 
+    //- The modes of a pair in contact (header): u_n, u_t, u_r of its
+    //  velocities xi, xj
+    struct Modes
+    {
+        double n;
+        Vec3 t;
+        Vec3 r;
+    };
+
+    inline Modes contactModes
+    (
+        const HydrodynamicResistance::Contact& c,
+        const Vec6& xi,
+        const Vec6& xj
+    )
+    {
+        const Vec3 du = xj.head<3>() - xi.head<3>();
+        const double un = c.n.dot(du);
+        return Modes
+        {
+            un,
+            du - un*c.n - (c.ai*xi.tail<3>() + c.aj*xj.tail<3>()).cross(c.n),
+            c.aij*c.n.cross(xi.tail<3>() - xj.tail<3>())
+        };
+    }
+
+    //- B^T s of a pair in contact: its rows of i (yi) and of j (yj)
+    inline void contactTranspose
+    (
+        const HydrodynamicResistance::Contact& c,
+        const Modes& s,
+        Vec6& yi,
+        Vec6& yj
+    )
+    {
+        const Vec3 f = s.n*c.n + s.t;
+        const Vec3 nxt = c.n.cross(s.t);
+        const Vec3 nxr = c.aij*c.n.cross(s.r);
+        yi << -f, -c.ai*nxt - nxr;
+        yj << f, -c.aj*nxt + nxr;
+    }
+
+    //- (dt K + Gamma) of a pair in contact applied to its velocities xi,
+    //  xj: B^T diag(c_n, c_t, c_r) B, its rows of i (yi) and of j (yj).
+    //  The tangential and rolling modes only where their springs act (a
+    //  frictionless or sliding contact has c_t = 0, no rolling c_r = 0)
+    inline void contactProduct
+    (
+        const HydrodynamicResistance::Contact& c,
+        const Vec6& xi,
+        const Vec6& xj,
+        Vec6& yi,
+        Vec6& yj
+    )
+    {
+        const Vec3 du = xj.head<3>() - xi.head<3>();
+        const double un = c.n.dot(du);
+        Vec3 f = (c.cn*un)*c.n;
+        Vec3 Ti = Vec3::Zero();
+        Vec3 Tj = Vec3::Zero();
+        if (c.ct != 0)
+        {
+            const Vec3 st = c.ct*
+            (
+                du - un*c.n - (c.ai*xi.tail<3>() + c.aj*xj.tail<3>()).cross(c.n)
+            );
+            f += st;
+            const Vec3 nxt = c.n.cross(st);
+            Ti = -c.ai*nxt;
+            Tj = -c.aj*nxt;
+        }
+        if (c.cr != 0)
+        {
+            const Vec3 sr = (c.cr*c.aij)*c.n.cross(xi.tail<3>() - xj.tail<3>());
+            const Vec3 nxr = c.aij*c.n.cross(sr);
+            Ti -= nxr;
+            Tj += nxr;
+        }
+        yi << -f, Ti;
+        yj << f, Tj;
+    }
+
+    //- Diagonal 6 x 6 block of B^T diag(kn, kt, kr) B of sphere i
+    //  (side = -1, radius a_i) or j (side = 1, radius a_j) of a pair
+    Block contactSelfBlock
+    (
+        const Vec3& n,
+        double side,
+        double a,
+        double aij,
+        double kn,
+        double kt,
+        double kr
+    )
+    {
+        const Mat3 N = outer(n, n);
+        const Mat3 T = Mat3::Identity() - N;
+        const Mat3 nx = crossMatrix(n);
+        Block D;
+        D.topLeftCorner<3, 3>() = kn*N + kt*T;
+        D.topRightCorner<3, 3>() = side*kt*a*nx;
+        D.bottomLeftCorner<3, 3>() = -side*kt*a*nx;
+        D.bottomRightCorner<3, 3>() = (kt*a*a + kr*aij*aij)*T;
+        return D;
+    }
+
     //- Velocity of particle i relative to the ambient flow, (u', omega')
     Vec6 relativeVelocity(const Particles& p, const FlowSample& f, std::size_t i)
     {
@@ -99,7 +205,8 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
     const Particles& p,
     const LeesEdwardsBox& box,
     const std::vector<FlowSample>& ambient,
-    const PairList& pairs
+    const PairList& pairs,
+    const std::vector<LinearisedContact>& contacts
 )
 {
     const std::size_t N = p.size();
@@ -218,6 +325,52 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
         }
     }
 
+    // The contacts, their index and the diagonal blocks of their springs
+    contacts_.resize(contacts.size());
+    contactRows_.resize(contacts.size());
+    contactIndex_.offset.assign(N + 1, 0);
+    contactIndex_.j.resize(contacts.size());
+    for (std::size_t s = 0; s < contacts.size(); ++s)
+    {
+        const LinearisedContact& c = contacts[s];
+        contacts_[s] = Contact
+        {
+            c.n, c.ai, c.aj, 2*c.ai*c.aj/(c.ai + c.aj), c.dUinf, c.k, 0, 0, 0
+        };
+        contactIndex_.j[s] = c.j;
+        ++contactIndex_.offset[c.i + 1];
+    }
+    for (std::size_t i = 0; i < N; ++i)
+    {
+        contactIndex_.offset[i + 1] += contactIndex_.offset[i];
+    }
+    contactIndex_.transpose();
+    diagonalK_.resize(N);
+    diagonalGamma_.resize(N);
+    #pragma omp parallel for schedule(static) if(threaded(N))
+    for (std::size_t i = 0; i < N; ++i)
+    {
+        Block K = Block::Zero();
+        Block G = Block::Zero();
+        auto add = [&](const Contact& c, double side, double a)
+        {
+            const ContactStiffness& k = c.k;
+            K += contactSelfBlock(c.n, side, a, c.aij, k.kn, k.kt, k.kr);
+            G.topLeftCorner<3, 3>() += k.gammaN*outer(c.n, c.n);
+        };
+        for (std::uint32_t s = contactIndex_.offset[i]; s < contactIndex_.offset[i + 1]; ++s)
+        {
+            add(contacts_[s], -1, contacts_[s].ai);
+        }
+        for (std::uint32_t t = contactIndex_.offsetT[i]; t < contactIndex_.offsetT[i + 1]; ++t)
+        {
+            const Contact& c = contacts_[contactIndex_.slotT[t]];
+            add(c, 1, c.aj);
+        }
+        diagonalK_[i] = K;
+        diagonalGamma_[i] = G;
+    }
+
     Stresslets S{Mat3::Zero(), Mat3::Zero()};
     for (std::size_t blk = 0; blk < nB; ++blk)
     {
@@ -228,10 +381,11 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
 }
 
 
-void HydrodynamicResistance::setInertia(const Particles& p, double invDt)
+void HydrodynamicResistance::setStep(const Particles& p, double dt, bool inertia)
 {
     const std::size_t N = p.size();
     const double eta = drag_.params().eta;
+    const double invDt = inertia ? 1/dt : 0;
     translation_.resize(N);
     rotation_.resize(N);
     inverseA_.resize(N);
@@ -244,9 +398,72 @@ void HydrodynamicResistance::setInertia(const Particles& p, double invDt)
         const double I = invDt*p.I[i];
         translation_[i] = 6*pi*eta*a + m;
         rotation_[i] = 8*pi*eta*a*a*a + I;
-        Block A = diagonalR_[i];
+        Block A = diagonalR_[i] + dt*diagonalK_[i] + diagonalGamma_[i];
         A.diagonal() += (Vec6() << Vec3::Constant(m), Vec3::Constant(I)).finished();
         inverseA_[i] = A.llt().solve(Block::Identity());
+    }
+
+    for (Contact& c : contacts_)
+    {
+        c.cn = dt*c.k.kn + c.k.gammaN;
+        c.ct = dt*c.k.kt;
+        c.cr = dt*c.k.kr;
+    }
+}
+
+
+void HydrodynamicResistance::contactRightHandSide
+(
+    const Vector& v,
+    const std::vector<FlowSample>& ambient,
+    double dt,
+    Vector& b
+) const
+{
+    const std::size_t N = ambient.size();
+
+    #pragma omp parallel if(threaded(N))
+    {
+        // Pass 1: rows of i; rows of j into contactRows_
+        #pragma omp for schedule(static)
+        for (std::size_t i = 0; i < N; ++i)
+        {
+            const Vec6 vi = v.segment<6>(6*i);
+            Vec6 Vi;
+            Vi << Vec3::Zero(), ambient[i].Omega();
+            Vec6 bi = Vec6::Zero();
+            for (std::uint32_t s = contactIndex_.offset[i]; s < contactIndex_.offset[i + 1]; ++s)
+            {
+                const Contact& c = contacts_[s];
+                const std::uint32_t j = contactIndex_.j[s];
+                Vec6 Vj;
+                Vj << c.dUinf, ambient[j].Omega();
+                const Modes ambientModes = contactModes(c, Vi, Vj);
+                const Modes start = contactModes(c, vi, v.segment<6>(6*j));
+                const Modes m
+                {
+                    c.k.gammaN*start.n - dt*c.k.kn*ambientModes.n,
+                    -dt*c.k.kt*ambientModes.t,
+                    -dt*c.k.kr*ambientModes.r
+                };
+                Vec6 rowsI;
+                contactTranspose(c, m, rowsI, contactRows_[s]);
+                bi += rowsI;
+            }
+            b.segment<6>(6*i) += bi;
+        }
+
+        // Pass 2: rows of j, in pair order
+        #pragma omp for schedule(static)
+        for (std::size_t j = 0; j < N; ++j)
+        {
+            Vec6 bj = Vec6::Zero();
+            for (std::uint32_t t = contactIndex_.offsetT[j]; t < contactIndex_.offsetT[j + 1]; ++t)
+            {
+                bj += contactRows_[contactIndex_.slotT[t]];
+            }
+            b.segment<6>(6*j) += bj;
+        }
     }
 }
 
@@ -274,6 +491,16 @@ void HydrodynamicResistance::apply(const Vector& x, Vector& y) const
                 );
                 yi += rowsI;
             }
+            for (std::uint32_t s = contactIndex_.offset[i]; s < contactIndex_.offset[i + 1]; ++s)
+            {
+                const Contact& c = contacts_[s];
+                Vec6 rowsI;
+                contactProduct
+                (
+                    c, xi, x.segment<6>(6*contactIndex_.j[s]), rowsI, contactRows_[s]
+                );
+                yi += rowsI;
+            }
             y.segment<6>(6*i) = yi;
         }
 
@@ -285,6 +512,10 @@ void HydrodynamicResistance::apply(const Vector& x, Vector& y) const
             for (std::uint32_t k = index_.offsetT[j]; k < index_.offsetT[j + 1]; ++k)
             {
                 yj += pairRows_[index_.slotT[k]];
+            }
+            for (std::uint32_t k = contactIndex_.offsetT[j]; k < contactIndex_.offsetT[j + 1]; ++k)
+            {
+                yj += contactRows_[contactIndex_.slotT[k]];
             }
             y.segment<6>(6*j) += yj;
         }

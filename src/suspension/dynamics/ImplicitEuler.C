@@ -12,7 +12,8 @@ ImplicitEuler::ImplicitEuler
 :
     inertia_(inertia),
     resistance_(models.drag(), models.get<Lubrication>()),
-    solver_(solver)
+    solver_(solver),
+    iterations_(0)
 {}
 
 
@@ -22,11 +23,12 @@ void ImplicitEuler::evaluate
     const LeesEdwardsBox& box,
     const std::vector<FlowSample>& ambient,
     const PairList& pairs,
+    const std::vector<LinearisedContact>& contacts,
     ForceSummary& summary
 )
 {
     const HydrodynamicResistance::Stresslets S =
-        resistance_.assemble(p, box, ambient, pairs);
+        resistance_.assemble(p, box, ambient, pairs, contacts);
     summary.stresslet[contributionIndex("stokes")] = S.stokes;
     summary.stresslet[contributionIndex(Lubrication::contribution)] = S.lubrication;
 }
@@ -42,7 +44,7 @@ void ImplicitEuler::solve
     const std::size_t N = p.size();
     const bool parallel = threaded(N);
     const double invDt = inertia_ ? 1/dt : 0;
-    resistance_.setInertia(p, invDt);
+    resistance_.setStep(p, dt, inertia_);
 
     // Warm start V'^n and right-hand side, relative to the flow at x^n
     const Eigen::VectorXd& Famb = resistance_.ambientForces();
@@ -59,7 +61,11 @@ void ImplicitEuler::solve
         b_.segment<3>(6*i + 3) = Famb.segment<3>(6*i + 3) + p.T[i] + invDt*p.I[i]*w;
     }
 
+    // The springs' load by the ambient motion and the dashpot's of V'^n
+    resistance_.contactRightHandSide(v_, ambient, dt, b_);
+
     statistics_ = solver_.solve(resistance_, b_, v_);
+    iterations_ += statistics_.iterations;
 
     #pragma omp parallel for schedule(static) if(parallel)
     for (std::size_t i = 0; i < N; ++i)

@@ -56,6 +56,11 @@ Simulation::Simulation
     limits_(makeLimits(forces_.models(), particles_, flow, params)),
     dtMax_(params.deltaT > 0 ? params.deltaT : limits_.deltaT()),
     aMin_(*std::min_element(particles_.a.begin(), particles_.a.end())),
+    stepLimitCounts_
+    {
+        {params.deltaT > 0 ? "deltaT" : limits_.binding().name, 0},
+        {"maxDisplacement", 0}
+    },
     time_(0),
     steps_(0)
 {
@@ -100,12 +105,12 @@ void Simulation::evaluateForces(double dt)
         summary_ = forces_.advance
         (
             particles_, box_, flow_, pairs_, search_.far(), dt,
-            ForceField::Forces::nonHydrodynamic
+            ForceField::Forces::nonHydrodynamic, &contacts_
         );
         ScopedTime timer(times_.hydrodynamics);
         implicit_->evaluate
         (
-            particles_, box_, forces_.ambient(), pairs_, summary_
+            particles_, box_, forces_.ambient(), pairs_, contacts_, summary_
         );
     }
     else
@@ -126,14 +131,20 @@ void Simulation::start(double t, bool forcesGiven)
     }
     else if (implicit_)
     {
-        // Summary (stress, contacts) of the given state; F and T as given
+        // Summary (stress, contacts) and linearised contacts of the given
+        // state; F and T as given
+        ForceField::Output out;
+        out.contacts = &contacts_;
         summary_ = forces_.evaluate
         (
-            particles_, box_, flow_, pairs_, search_.far(), ForceField::Output(),
+            particles_, box_, flow_, pairs_, search_.far(), out,
             ForceField::Forces::nonHydrodynamic
         );
         ScopedTime timer(times_.hydrodynamics);
-        implicit_->evaluate(particles_, box_, forces_.ambient(), pairs_, summary_);
+        implicit_->evaluate
+        (
+            particles_, box_, forces_.ambient(), pairs_, contacts_, summary_
+        );
     }
     else
     {
@@ -200,15 +211,17 @@ void Simulation::advance(double interval)
     {
         return;
     }
-    if (params_.maxDisplacement > 0)
+    if (adaptive())
     {
         const double end = time_ + interval;
         for (;;)
         {
             const double remaining = end - time_;
+            const auto [bound, limit] = stepBound();
             const double n =
-                std::max(1.0, std::ceil(remaining/stepBound()*(1 - 1e-12)));
+                std::max(1.0, std::ceil(remaining/bound*(1 - 1e-12)));
             step(remaining/n);
+            ++stepLimitCounts_[limit].steps;
             if (n == 1)
             {
                 time_ = end;
@@ -218,6 +231,7 @@ void Simulation::advance(double interval)
     }
     // n - 1 steps of dtMax and the rest
     const std::uint64_t n = stepsIn(interval);
+    stepLimitCounts_[0].steps += n;
     const double t0 = time_;
     for (std::uint64_t k = 1; k < n; ++k)
     {
@@ -240,21 +254,30 @@ std::uint64_t Simulation::stepsIn(double interval) const
 }
 
 
-double Simulation::stepBound() const
+std::pair<double, std::size_t> Simulation::stepBound() const
 {
-    if (params_.maxDisplacement == 0)
+    std::pair<double, std::size_t> bound{dtMax_, 0};
+    auto tighten = [&](double value, std::size_t limit)
     {
-        return dtMax_;
-    }
-    const std::vector<FlowSample>& ambient = forces_.ambient();
-    double uMax = 0;
-    for (std::size_t i = 0; i < particles_.size(); ++i)
+        if (value < bound.first)
+        {
+            bound = {value, limit};
+        }
+    };
+    if (params_.maxDisplacement > 0)
     {
-        uMax = std::max(uMax, (particles_.u[i] - ambient[i].U).norm());
+        const std::vector<FlowSample>& ambient = forces_.ambient();
+        double uMax = 0;
+        for (std::size_t i = 0; i < particles_.size(); ++i)
+        {
+            uMax = std::max(uMax, (particles_.u[i] - ambient[i].U).norm());
+        }
+        if (uMax > 0)
+        {
+            tighten(params_.maxDisplacement*aMin_/uMax, 1);
+        }
     }
-    return uMax > 0
-        ? std::min(dtMax_, params_.maxDisplacement*aMin_/uMax)
-        : dtMax_;
+    return bound;
 }
 
 

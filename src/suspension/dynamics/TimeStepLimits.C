@@ -98,41 +98,41 @@ namespace
         return 1/lambdaMax;
     }
 
-    //- Largest stable step of a spring k with dashpot gamma (explicit) on
-    //  a coordinate of inertia m with resistance zeta (implicit); see the
-    //  header. zeta = gamma = 0: the explicit spring limit 2 sqrt(m/k).
-    double modeLimit(double k, double gamma, double m, double zeta)
+    //- Largest stable step of a spring k on a coordinate of inertia m
+    //  with resistance zeta (implicit); see the header. zeta = 0: the
+    //  explicit spring limit 2 sqrt(m/k).
+    double modeLimit(double k, double m, double zeta)
     {
-        const double c = zeta - gamma;
-        double dt = (c + std::sqrt(c*c + 4*k*m))/k;
-        if (gamma > zeta)
-        {
-            dt = std::min(dt, 2*m/(gamma - zeta));
-        }
-        return dt;
+        return (zeta + std::sqrt(zeta*zeta + 4*k*m))/k;
     }
 
-    //- Directions b of the contact modes of a touching pair in the 12 dof
+    //- Direction b of a contact mode of a touching pair in the 12 dof
     //  (n = e_x, t = e_y): the mode coordinate changes at b.v, so a spring
     //  k on it is the force -k (b.x) b. Normal: n.(u_j - u_i); tangential
-    //  (4b): t.u_t = t.(u_j - u_i) - (a_i omega_i + a_j omega_j).(n x t);
+    //  (4b, 5): t.u_t = t.(u_j - u_i) - (a_i omega_i + a_j omega_j).(n x t);
     //  rolling (B.1): t.u_r = a_ij (omega_i - omega_j).(t x n)
-    std::array<Eigen::Matrix<double, 12, 1>, 3> contactModeDirections
+    Eigen::Matrix<double, 12, 1> modeDirection
     (
+        TimeStepLimitBuilder::Mode mode,
         double ai,
         double aj
     )
     {
-        std::array<Eigen::Matrix<double, 12, 1>, 3> b;
-        for (auto& v : b)
+        Eigen::Matrix<double, 12, 1> b = Eigen::Matrix<double, 12, 1>::Zero();
+        switch (mode)
         {
-            v.setZero();
+            case TimeStepLimitBuilder::Mode::normal:
+                b(0) = -1;  b(3) = 1;
+                break;
+            case TimeStepLimitBuilder::Mode::tangential:
+                b(1) = -1;  b(4) = 1;
+                b(8) = -ai; b(11) = -aj;                // n x t = e_z
+                break;
+            case TimeStepLimitBuilder::Mode::rolling:
+                b(8) = -harmonicRadius(ai, aj);         // t x n = -e_z
+                b(11) = harmonicRadius(ai, aj);
+                break;
         }
-        const double aij = harmonicRadius(ai, aj);
-        b[0](0) = -1;  b[0](3) = 1;                         // normal
-        b[1](1) = -1;  b[1](4) = 1;                         // tangential
-        b[1](8) = -ai; b[1](11) = -aj;                      // n x t = e_z
-        b[2](8) = -aij; b[2](11) = aij;                     // t x n = -e_z
         return b;
     }
 
@@ -215,7 +215,6 @@ namespace
         double springLimit
         (
             double k,
-            double gamma,
             Mode mode,
             double ai,
             double aj,
@@ -224,12 +223,11 @@ namespace
         {
             const ModeInverses inv = modeInverses
             (
-                models_, ai, aj, h, rho_,
-                contactModeDirections(ai, aj)[static_cast<int>(mode)]
+                models_, ai, aj, h, rho_, modeDirection(mode, ai, aj)
             );
             return modeLimit
             (
-                k, gamma,
+                k,
                 inertia_ ? 1/inv.inertia : 0,
                 explicit_ ? 0 : 1/inv.resistance
             );
@@ -258,7 +256,7 @@ namespace
                 Fh = Fnext;
                 if (k > 0)
                 {
-                    dt = std::min(dt, springLimit(k, 0, Mode::normal, ai, aj, h));
+                    dt = std::min(dt, springLimit(k, Mode::normal, ai, aj, h));
                 }
             }
             return dt;
@@ -333,9 +331,7 @@ TimeStepLimits::TimeStepLimits
         {
             throw std::invalid_argument
             (
-                "TimeStepLimits: no stable step for the " + l.name
-              + " forces; overdamped, an explicit dashpot must be weaker"
-                " than the Stokes resistance of the pair"
+                "TimeStepLimits: no stable step for the " + l.name + " forces"
             );
         }
     }

@@ -223,11 +223,20 @@ void ForceField::nearPass
         (0 + ... + int(Ms::hasHistory)) <= 1,
         "a pair carries one ContactState: at most one model with history"
     );
+    static_assert
+    (
+        ((!linearisable<Ms> || Ms::usesVelocities) && ...),
+        "a model with stiffness() is linearised about the velocities"
+    );
     if constexpr (sizeof...(Ms) == 0)
     {
         // No model here: the contacts are still counted (Simulation's
-        // check of the overlap needs them)
+        // checks of the overlap need them)
         const std::size_t N = p.size();
+        if (out.contacts)
+        {
+            out.contacts->clear();
+        }
         #pragma omp parallel for schedule(static) if(threaded(N))
         for (std::size_t b = 0; b < reductionBlocks(N); ++b)
         {
@@ -276,6 +285,11 @@ void ForceField::nearPass
         {
             blockContacts_.resize(reductionBlocks(N));
         }
+        const bool linearise = (linearisable<Ms> || ...) && out.contacts;
+        if (linearise)
+        {
+            blockLinearised_.resize(reductionBlocks(N));
+        }
 
         slotForce_.resize(near.nPairs());
         slotOn_.resize(near.nPairs());
@@ -294,6 +308,10 @@ void ForceField::nearPass
             if (advanceHistory)
             {
                 blockContacts_[b].clear();
+            }
+            if (linearise)
+            {
+                blockLinearised_[b].clear();
             }
             const BlockRange rows(b, N);
             for (std::size_t i = rows.begin; i < rows.end; ++i)
@@ -321,6 +339,11 @@ void ForceField::nearPass
                     }
 
                     const PairGeometry g = PairGeometry::make(r, p.a[i], p.a[j]);
+
+                    // The image moves faster by m gammaDot Ly, and so does
+                    // U_inf there: relative velocities unchanged
+                    const Vec3 jump = image*imageVelocity*Vec3::UnitX();
+                    const Vec3 du = p.u[j] + jump - p.u[i];
                     if (g.h < 0)
                     {
                         countContact(stats, g, p.id[i], p.id[j]);
@@ -330,6 +353,8 @@ void ForceField::nearPass
                     ContactState next;
                     const ContactState& old =
                         readHistory ? near.history(k) : next;
+                    ContactStiffness stiffness;
+                    bool linearised = false;
                     auto applyModels = [&](const PairKinematics* kin)
                     {
                         std::size_t m = 0;
@@ -349,6 +374,25 @@ void ForceField::nearPass
                                         total.S += f.S;
                                     }
                                     S[m] += f.S;
+                                    if constexpr (linearisable<Ms>)
+                                    {
+                                        // About the state the pair keeps:
+                                        // the advanced one, or the one read
+                                        if (linearise)
+                                        {
+                                            const ContactStiffness c =
+                                                model.stiffness
+                                                (
+                                                    g, *kin,
+                                                    advanceHistory ? next : old
+                                                );
+                                            stiffness.kn += c.kn;
+                                            stiffness.gammaN += c.gammaN;
+                                            stiffness.kt += c.kt;
+                                            stiffness.kr += c.kr;
+                                            linearised = true;
+                                        }
+                                    }
                                 }
                                 ++m;
                             }(),
@@ -357,10 +401,6 @@ void ForceField::nearPass
                     };
                     if constexpr (anyVelocities<Ms...>)
                     {
-                        // The image moves faster by m gammaDot Ly, and so
-                        // does U_inf there: relative velocities unchanged
-                        const Vec3 du =
-                            p.u[j] + image*imageVelocity*Vec3::UnitX() - p.u[i];
                         const PairKinematics kin
                         {
                             uRel_[i], uRel_[j], wRel_[i], wRel_[j], du,
@@ -371,6 +411,14 @@ void ForceField::nearPass
                     else
                     {
                         applyModels(nullptr);
+                    }
+                    if (linearised)
+                    {
+                        blockLinearised_[b].push_back
+                        ({
+                            static_cast<std::uint32_t>(i), j, g.n, g.ai, g.aj,
+                            ambient_[j].U + jump - ambient_[i].U, stiffness
+                        });
                     }
                     if (advanceHistory)
                     {
@@ -405,6 +453,20 @@ void ForceField::nearPass
             {
                 blockS_[b*nC + contribution[m]] += S[m];
             }
+        }
+
+        // The linearised contacts in block (so slot) order
+        if (linearise)
+        {
+            out.contacts->clear();
+            for (const std::vector<LinearisedContact>& c : blockLinearised_)
+            {
+                out.contacts->insert(out.contacts->end(), c.begin(), c.end());
+            }
+        }
+        else if (out.contacts)
+        {
+            out.contacts->clear();
         }
 
         // The next pool: the contacts in block (so slot) order
@@ -712,12 +774,14 @@ ForceSummary ForceField::advance
     PairList& near,
     const PairList& far,
     double dt,
-    Forces forces
+    Forces forces,
+    std::vector<LinearisedContact>* contacts
 )
 {
     Output out;
     out.F = &p.F;
     out.T = &p.T;
+    out.contacts = contacts;
     return run(p, box, flow, near, &near, far, dt, forces, out);
 }
 

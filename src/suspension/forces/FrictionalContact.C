@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace suspension
@@ -81,28 +82,36 @@ std::string FrictionalContact::describe() const
 void FrictionalContact::addTimeStepLimits(TimeStepLimitBuilder& limits) const
 {
     using Mode = TimeStepLimitBuilder::Mode;
-    limits.addOverPairs("contact", [&](double ai, double aj)
+    if (limits.explicitHydrodynamics())
     {
-        if (limits.explicitHydrodynamics())
+        limits.addOverPairs("contact", [&](double ai, double aj)
         {
             const double rho = limits.rho();
             auto mass = [rho](double a) { return 4.0/3.0*pi*a*a*a*rho; };
             return 2*contactTimeScale(p_, mass(ai), ai, mass(aj), aj)/pi;
-        }
-        // A pair in contact feels Stokes drag and, when on, lubrication
-        // at the regularised gap (A.6). Without friction (mu_C = 0) the
-        // tangential spring never pulls, and without rolling stiffness or
-        // friction neither does the rolling one
-        double dt = limits.springLimit(p_.kn, p_.gammaN, Mode::normal, ai, aj, 0);
-        if (p_.muC > 0)
+        });
+        return;
+    }
+
+    // Implicit: the sliding stretches' explicit Coulomb forces (Description)
+    const bool sliding = p_.muC > 0;
+    const bool rolling = p_.kr > 0 && muR_ > 0;
+    if (!sliding && !rolling)
+    {
+        return;
+    }
+    limits.addOverPairs("slidingFriction", [&](double ai, double aj)
+    {
+        double dt = std::numeric_limits<double>::infinity();
+        if (sliding)
         {
-            dt = std::min(dt, limits.springLimit(p_.kt, 0, Mode::tangential, ai, aj, 0));
+            dt = limits.springLimit(p_.kt, Mode::tangential, ai, aj, 0);
         }
-        if (p_.kr > 0 && muR_ > 0)
+        if (rolling)
         {
-            dt = std::min(dt, limits.springLimit(p_.kr, 0, Mode::rolling, ai, aj, 0));
+            dt = std::min(dt, limits.springLimit(p_.kr, Mode::rolling, ai, aj, 0));
         }
-        return dt;
+        return slidingFrictionFactor*dt;
     });
 }
 

@@ -277,7 +277,7 @@ void Foam::suspensionCloud::reportStart() const
     const scalar lastStep = interval - (outerSteps - 1)*sim.deltaT();
     Info<< nl
         << "    outer step   " << interval;
-    if (sim.params().maxDisplacement > 0)
+    if (sim.adaptive())
     {
         Info<< " >= " << outerSteps << " steps";
     }
@@ -336,6 +336,11 @@ void Foam::suspensionCloud::reportProgress()
     {
         Info<< "  CG " << label(implicit->statistics().iterations)
             << " iterations, |r|/|rhs| " << implicit->statistics().residual;
+    }
+    if (sim.adaptive())
+    {
+        Info<< "  steps set by";
+        reportStepLimits();
     }
     Info<< "  ETA " << clockTime(max(toGo, 0)*elapsed/done).c_str() << endl;
 
@@ -540,6 +545,23 @@ bool Foam::suspensionCloud::writeObject
 }
 
 
+void Foam::suspensionCloud::reportStepLimits() const
+{
+    const std::vector<suspension::Simulation::StepLimitCount>& counts =
+        sim_->stepLimitCounts();
+    std::uint64_t total = 0;
+    for (const auto& c : counts)
+    {
+        total += c.steps;
+    }
+    for (const auto& c : counts)
+    {
+        Info<< ' ' << c.name.c_str() << ' '
+            << label(total ? 100.0*c.steps/total + 0.5 : 0) << '%';
+    }
+}
+
+
 void Foam::suspensionCloud::reportKernelTimes() const
 {
     const suspension::KernelTimes k = sim_->kernelTimes();
@@ -564,7 +586,14 @@ void Foam::suspensionCloud::reportKernelTimes() const
     }
     Info<< "    total " << total << " s over " << label(sim_->steps())
         << " steps, " << 1e9*total/particleSteps << " ns per particle-step"
-        << nl << endl;
+        << nl;
+    if (sim_->adaptive())
+    {
+        Info<< "Steps set by (share of the steps):";
+        reportStepLimits();
+        Info<< nl;
+    }
+    Info<< endl;
 }
 
 
