@@ -5,9 +5,11 @@ postProcessing/rheology/*/rheologySummary.dat), the mean step, the CPU
 seconds per strain, and two differences, each with the error bar of a
 difference of independent runs:
 
-- "difference": a run of the template's lubrication (epsilon, delta) against
-  the implicitEuler run of the smallest safety (the case's reference); a run
-  with epsilon or delta changed (-eps, -delta in its name) against the run
+- "difference": a run of the template's lubrication (epsilon, delta) and CG
+  tolerance against the implicitEuler run of the smallest safety (the
+  case's reference); a run with epsilon, delta, the tolerance or the
+  normal contact springs changed (-eps, -delta, -tol, -normal in its name)
+  against the run
   of the same integrator and safety without the change (so that the step's
   own bias cancels); a run started from a stored steady state (-from<t>)
   against the reference;
@@ -31,6 +33,7 @@ from rheologydata import cpuSeconds, fillTables, readRheology, readSummary  # no
 
 NAME = re.compile(r"(?P<integrator>\w+)-safety(?P<safety>[0-9.]+)"
                   r"(?:-eps(?P<eps>[0-9.eE+-]+?))?(?:-delta(?P<delta>[0-9.]+?))?"
+                  r"(?:-tol(?P<tol>[0-9.eE+-]+?))?(?:-normal(?P<normal>[a-z]+))?"
                   r"(?:-from(?P<start>[0-9.]+))?$")
 
 
@@ -50,6 +53,8 @@ def readRuns(runRoot):
             variant=" ".join(x for x in (
                 m.group("eps") and "ε = " + m.group("eps"),
                 m.group("delta") and "δ = " + m.group("delta"),
+                m.group("tol") and "CG tolerance " + m.group("tol"),
+                m.group("normal") and "normal contact " + m.group("normal"),
                 m.group("start") and "from strain " + m.group("start")) if x),
             deltaT=float(r["deltaT"][-1]) if r is not None else float("nan"),
             strain=strain, cpu_s_per_strain=cpuSeconds(run)/strain,

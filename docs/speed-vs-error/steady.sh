@@ -8,15 +8,19 @@
 # object suspensionRheology), tabulated by steady.py.
 #
 #   [CASE=frictional] [INTEGRATOR=overdamped] [EPSILON=1e-2] [DELTA=0.2] \
-#   [START=<time dir>] docs/speed-vs-error/steady.sh [strain] [safety ...]
+#   [TOLERANCE=1e-4] [NORMAL=implicit] [START=<time dir>] \
+#   docs/speed-vs-error/steady.sh [strain] [safety ...]
 #
 # Defaults: CASE=frictionless, INTEGRATOR=implicitEuler, the template's
-# lubrication epsilon (1e-3) and delta (0.05); a setting away from the
-# template's is part of the case name (e.g. implicitEuler-safety0.2-eps0.01).
+# lubrication epsilon (1e-3) and delta (0.05), CG tolerance and normal
+# contact springs (integration/normalContact, auto); a setting away from the
+# template's is part of the case name (e.g. implicitEuler-safety0.2-eps0.01,
+# implicitEuler-safety0.2-tol1e-4, implicitEuler-safety0.2-normalimplicit).
 # START=<case>/<time>: start from that stored state (a steady one) instead of
 # a new packing, with its time as the start; only the strain after it counts.
 #
-# Cases under run/speed-vs-error/steady/<case>/, restartable
+# Cases under $WSF_SPEED_DIR/steady/<case>/ (default run/speed-vs-error),
+# restartable
 # (etc/caseFunctions): two at a time, one thread each.
 #------------------------------------------------------------------------------
 set -u
@@ -34,6 +38,8 @@ integrator=${INTEGRATOR:-implicitEuler}
 extra=() suffix=
 [ -n "${EPSILON:-}" ] && { extra+=(lubrication/epsilon="$EPSILON"); suffix+=-eps$EPSILON; }
 [ -n "${DELTA:-}" ] && { extra+=(lubrication/delta="$DELTA"); suffix+=-delta$DELTA; }
+[ -n "${TOLERANCE:-}" ] && { extra+=(integration/solver/tolerance="$TOLERANCE"); suffix+=-tol$TOLERANCE; }
+[ -n "${NORMAL:-}" ] && { extra+=(integration/normalContact="$NORMAL"); suffix+=-normal$NORMAL; }
 if [ -n "${START:-}" ]; then
     # Copy the stored state in as the case's first time and start from it
     START=$(cd "$START" && pwd) || exit 1

@@ -55,7 +55,7 @@ frictionless()
 # Paper Table 1 FR: N = 1000, mu_C = 1, delta_lub = 0.05
 frictional()
 {
-    local phis="0.40 0.45 0.48 0.50 0.52 0.54" end=5 dense="0.52 0.54"
+    local phis="0.40 0.45 0.48 0.50 0.52 0.54" end=10 dense="0.52 0.54"
     if [ $mode = quick ]; then phis="0.45"; end=0.2; dense=""; fi
     local phi seed
     for phi in $phis; do

@@ -16,6 +16,7 @@
 
 #include <cmath>
 #include <functional>
+#include <optional>
 #include <random>
 #include <tuple>
 #include <vector>
@@ -141,7 +142,8 @@ namespace
         const Vec3& xi0,
         double G,
         double dt,
-        int steps
+        int steps,
+        bool implicitNormal = true
     )
     {
         LeesEdwardsBox box(Vec3(20, 20, 20), 0.0);
@@ -150,7 +152,10 @@ namespace
         p.add(Vec3(9, 10, 10), 1.0, rho, 0);
         p.add(Vec3(11 + h0, 10, 10), 1.0, rho, 1);
         ForceField forces(models, p.a);
-        ImplicitEuler implicit(models, inertia, ConjugateGradient::Params());
+        ImplicitEuler implicit
+        (
+            models, inertia, ConjugateGradient::Params(), implicitNormal
+        );
         NeighbourSearch search({models.interactionGap(), 0.5});
         PairList pairs;
         search.rebuild(p, box, pairs);
@@ -498,6 +503,84 @@ TEST(ImplicitContact, NormalContactFollowsTheOverdampedRelaxationFarBeyondTheExp
 }
 
 
+TEST(ImplicitContact, ExplicitNormalSpringRelaxesAsExplicitEuler)
+{
+    // The normal spring left explicit (implicitNormalContact false), the
+    // overlap error e = h - h* of a frictionless held pair, overdamped,
+    // shrinks by 1 - x per step, x = dt 2 k_n/zeta (zeta the normal mode's
+    // resistance at the regularised gap; the explicit dashpot, gamma_n =
+    // 1e-7 k_n, changes it by ~1e-5); taken implicitly, by 1/(1 + x)
+    const ForceModels models = tableOne(0.0);
+    const double kn = springs(models).kn;
+    const Mat12 R = pairResistance(models);
+    const double zeta = 2/normalMode().dot(R.ldlt().solve(normalMode()));
+    const double x = 0.5;
+    const double dt = x*zeta/(2*kn);
+    const double e0 = -0.5*F/kn;
+    const double hEq = -F/kn;
+    for (const bool implicitNormal : {false, true})
+    {
+        const PairRun run = heldPair
+        (
+            models, false, hEq + e0, Vec3::Zero(), 0, dt, 4, implicitNormal
+        );
+        EXPECT_EQ(run.linearised, implicitNormal ? 1u : 0u);
+        const double factor = implicitNormal ? 1/(1 + x) : 1 - x;
+        double e = e0;
+        for (std::size_t k = 0; k < run.gap.size(); ++k)
+        {
+            e *= factor;
+            EXPECT_NEAR((run.gap[k] - hEq)/e, 1, 1e-3)
+                << "implicit normal " << implicitNormal << ", step " << k;
+        }
+    }
+}
+
+
+TEST(ImplicitContact, NormalSpringImplicitOnlyWhereItsExplicitLimitWouldBind)
+{
+    // Table 1 FR (k_hat = 4e5, eps = 1e-3): the explicit normal spring's
+    // limit is far above slidingFriction's, so auto keeps it explicit and
+    // names its limit; frictionless and 1000 times stiffer, it would be
+    // 1000 times below lubricationGap, so it is implicit and sets none;
+    // the integration entry overrides either way
+    auto run = [](double stiffness, double muC, std::optional<bool> given)
+    {
+        ForceModels m = tableOne(muC);
+        m.set(FrictionalContact(FrictionalContact::fromGroups(stiffness, 2.0/7.0, 1e-7, muC)));
+        RandomPacking::Params pp;
+        pp.phi = 0.3;
+        pp.seed = 2;
+        pp.reach = m.interactionGap() + Simulation::Params().skin;
+        RandomPacking::Result packed = RandomPacking(pp).pack
+        (
+            SizeDistribution::bidisperse(1.0, 1.4, 1.0).radii(60), rho
+        );
+        const ShearFlow flow(1.0);
+        Simulation::Params params;
+        params.rho = rho;
+        params.integrator = Integrator::overdamped;
+        params.implicitNormalContact = given;
+        const Simulation sim
+        (
+            packed.particles, LeesEdwardsBox(packed.box.L(), 1.0), flow, m, params
+        );
+        bool named = false;
+        for (const TimeStepLimit& l : sim.limits().all())
+        {
+            named = named || l.name == "contact";
+        }
+        EXPECT_EQ(named, !sim.implicitNormalContact());
+        EXPECT_EQ(sim.implicit()->implicitNormalContact(), sim.implicitNormalContact());
+        return sim.implicitNormalContact();
+    };
+    EXPECT_FALSE(run(kHat, 1, std::nullopt));
+    EXPECT_TRUE(run(1000*kHat, 0, std::nullopt));
+    EXPECT_TRUE(run(kHat, 1, true));
+    EXPECT_FALSE(run(1000*kHat, 0, false));
+}
+
+
 TEST(ImplicitContact, StickingTangentialContactFollowsTheOverdampedRelaxation)
 {
     // A frictional pair at its equilibrium overlap with a tangential
@@ -822,11 +905,17 @@ TEST(ImplicitContact, StressIsThatOfThePairKernelsAtTheEndOfTheStep)
                 EXPECT_LT((F[i] - sim.particles().F[i]).norm(), 1e-10*(1 + F[i].norm()));
                 EXPECT_LT((T[i] - sim.particles().T[i]).norm(), 1e-10*(1 + T[i].norm()));
             }
-            EXPECT_EQ(contacts.size(), sim.implicit()->resistance().nContacts());
+            // The operator holds every linearised contact, or with the
+            // normal springs explicit (auto, here) those with a sticking
+            // tangential or rolling spring
+            std::size_t implicitSprings = 0;
             for (const LinearisedContact& l : contacts)
             {
                 sticking += l.k.kt > 0;
+                implicitSprings +=
+                    sim.implicitNormalContact() || l.k.kt > 0 || l.k.kr > 0;
             }
+            EXPECT_EQ(implicitSprings, sim.implicit()->resistance().nContacts());
         }
         EXPECT_GT(sim.summary().nContacts, 10u);
         EXPECT_GT(sticking, 0u);

@@ -7,10 +7,12 @@ ImplicitEuler::ImplicitEuler
 (
     const ForceModels& models,
     bool inertia,
-    const ConjugateGradient::Params& solver
+    const ConjugateGradient::Params& solver,
+    bool implicitNormalContact
 )
 :
     inertia_(inertia),
+    implicitNormalContact_(implicitNormalContact),
     resistance_(models.drag(), models.get<Lubrication>()),
     solver_(solver),
     iterations_(0)
@@ -27,8 +29,26 @@ void ImplicitEuler::evaluate
     ForceSummary& summary
 )
 {
-    const HydrodynamicResistance::Stresslets S =
-        resistance_.assemble(p, box, ambient, pairs, contacts);
+    if (!implicitNormalContact_)
+    {
+        // The normal springs explicit: the sticking tangential and rolling
+        // ones only, in the same order
+        implicitContacts_.clear();
+        for (LinearisedContact c : contacts)
+        {
+            c.k.kn = 0;
+            c.k.gammaN = 0;
+            if (c.k.kt > 0 || c.k.kr > 0)
+            {
+                implicitContacts_.push_back(c);
+            }
+        }
+    }
+    const HydrodynamicResistance::Stresslets S = resistance_.assemble
+    (
+        p, box, ambient, pairs,
+        implicitNormalContact_ ? contacts : implicitContacts_
+    );
     summary.stresslet[contributionIndex("stokes")] = S.stokes;
     summary.stresslet[contributionIndex(Lubrication::contribution)] = S.lubrication;
 }

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace suspension
@@ -15,7 +16,8 @@ namespace
         const ForceModels& models,
         const Particles& p,
         const AmbientFlow& flow,
-        const Simulation::Params& params
+        const Simulation::Params& params,
+        bool implicitNormalContact
     )
     {
         if (p.size() == 0)
@@ -26,8 +28,39 @@ namespace
         return TimeStepLimits
         (
             models, *aMin, *aMax, params.rho, params.safety, params.integrator,
-            flow.maxVelocityGradient()
+            flow.maxVelocityGradient(), implicitNormalContact
         );
+    }
+
+    //- The implicit integrators take the normal contact springs
+    //  implicitly when asked to or, unset, when their explicit limit
+    //  ("contact") is below half of every other limit: implicitly they
+    //  cost accuracy at equal step (TimeStepLimits.H)
+    bool implicitNormalContact
+    (
+        const ForceModels& models,
+        const Particles& p,
+        const AmbientFlow& flow,
+        const Simulation::Params& params
+    )
+    {
+        if (params.integrator == Integrator::velocityVerlet)
+        {
+            return false;
+        }
+        if (params.implicitNormalContact)
+        {
+            return *params.implicitNormalContact;
+        }
+        double contact = std::numeric_limits<double>::infinity();
+        double others = contact;
+        const TimeStepLimits explicitNormal = makeLimits(models, p, flow, params, false);
+        for (const TimeStepLimit& l : explicitNormal.all())
+        {
+            double& v = l.name == "contact" ? contact : others;
+            v = std::min(v, l.value);
+        }
+        return contact < 0.5*others;
     }
 }
 
@@ -53,7 +86,14 @@ Simulation::Simulation
         params.stencil,
         forces_.farGap()
     }),
-    limits_(makeLimits(forces_.models(), particles_, flow, params)),
+    implicitNormalContact_
+    (
+        suspension::implicitNormalContact(forces_.models(), particles_, flow, params)
+    ),
+    limits_
+    (
+        makeLimits(forces_.models(), particles_, flow, params, implicitNormalContact_)
+    ),
     dtMax_(params.deltaT > 0 ? params.deltaT : limits_.deltaT()),
     aMin_(*std::min_element(particles_.a.begin(), particles_.a.end())),
     stepLimitCounts_
@@ -92,7 +132,8 @@ Simulation::Simulation
         (
             forces_.models(),
             params.integrator == Integrator::implicitEuler,
-            params.solver
+            params.solver,
+            implicitNormalContact_
         );
     }
 }

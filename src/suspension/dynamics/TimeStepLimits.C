@@ -180,6 +180,7 @@ namespace
         const std::array<std::pair<double, double>, 3> pairs_;
         const double rho_;
         const bool explicit_;
+        const bool implicitNormal_;
         const bool inertia_;
         const double maxGradU_;
         std::vector<TimeStepLimit>& limits_;
@@ -192,6 +193,7 @@ namespace
             const std::array<std::pair<double, double>, 3>& pairs,
             double rho,
             bool explicitHydrodynamics,
+            bool implicitNormalContact,
             bool inertia,
             double maxGradU,
             std::vector<TimeStepLimit>& limits
@@ -201,12 +203,14 @@ namespace
             pairs_(pairs),
             rho_(rho),
             explicit_(explicitHydrodynamics),
+            implicitNormal_(!explicitHydrodynamics && implicitNormalContact),
             inertia_(inertia),
             maxGradU_(maxGradU),
             limits_(limits)
         {}
 
         bool explicitHydrodynamics() const override { return explicit_; }
+        bool implicitNormalContact() const override { return implicitNormal_; }
         double rho() const override { return rho_; }
         double maxVelocityGradient() const override { return maxGradU_; }
 
@@ -298,7 +302,8 @@ TimeStepLimits::TimeStepLimits
     double rho,
     double safety,
     Integrator integrator,
-    double maxVelocityGradient
+    double maxVelocityGradient,
+    bool implicitNormalContact
 )
 :
     safety_(safety)
@@ -319,7 +324,8 @@ TimeStepLimits::TimeStepLimits
     Builder builder
     (
         models, {{{aMin, aMin}, {aMin, aMax}, {aMax, aMax}}}, rho,
-        explicitHydrodynamics, inertia, maxVelocityGradient, limits_
+        explicitHydrodynamics, implicitNormalContact, inertia,
+        maxVelocityGradient, limits_
     );
     auto addLimits = [&](const auto& m) { m.addTimeStepLimits(builder); };
     models.forEachParticleModel(addLimits);

@@ -93,7 +93,18 @@ void FrictionalContact::addTimeStepLimits(TimeStepLimitBuilder& limits) const
         return;
     }
 
-    // Implicit: the sliding stretches' explicit Coulomb forces (Description)
+    // Implicit: the normal spring when it is explicit, against the pair's
+    // resistance at contact (the regularised gap); the normal dashpot,
+    // gamma_n << that resistance, sets no limit
+    if (!limits.implicitNormalContact())
+    {
+        limits.addOverPairs("contact", [&](double ai, double aj)
+        {
+            return limits.springLimit(p_.kn, Mode::normal, ai, aj, 0);
+        });
+    }
+
+    // and the sliding stretches' explicit Coulomb forces (Description)
     const bool sliding = p_.muC > 0;
     const bool rolling = p_.kr > 0 && muR_ > 0;
     if (!sliding && !rolling)

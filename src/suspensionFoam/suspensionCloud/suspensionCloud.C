@@ -271,6 +271,13 @@ void Foam::suspensionCloud::reportStart() const
     {
         Info<< ' ' << l.name.c_str() << ' ' << l.value;
     }
+    if (sim.implicit())
+    {
+        const auto& p = properties_.simulationParams();
+        Info<< nl << "    normal contact springs "
+            << (sim.implicitNormalContact() ? "implicit" : "explicit")
+            << (p.implicitNormalContact ? " (integration/normalContact)" : " (auto)");
+    }
     // Simulation::advance: steps of deltaT and a shorter last one
     const scalar interval = runTime_.deltaTValue();
     const label outerSteps = label(sim.stepsIn(interval));

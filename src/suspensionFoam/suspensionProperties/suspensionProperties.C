@@ -43,7 +43,7 @@ suspension::Simulation::Params readIntegration
         dict,
         {
             "integrator", "deltaT", "safety", "skin", "stencil", "maxOverlap",
-            "maxDisplacement", "solver"
+            "maxDisplacement", "normalContact", "solver"
         }
     );
 
@@ -81,6 +81,28 @@ suspension::Simulation::Params readIntegration
     (
         dict, "maxDisplacement", p.maxDisplacement, interval::positive()
     );
+
+    // The normal contact springs of the implicit integrators: auto (unset),
+    // implicit or explicit; read only by them
+    if
+    (
+        p.integrator != suspension::Integrator::velocityVerlet
+     && dict.found("normalContact", keyType::LITERAL)
+    )
+    {
+        const word w(dict.get<word>("normalContact"));
+        if (w == "implicit" || w == "explicit")
+        {
+            p.implicitNormalContact = w == "implicit";
+        }
+        else if (w != "auto")
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry 'normalContact' = " << w << " in dictionary "
+                << dict.name() << " must be auto, implicit or explicit"
+                << nl << exit(FatalIOError);
+        }
+    }
 
     // CG of the implicit integrators; read only by them, as the entries of
     // a model that is off
