@@ -8,8 +8,9 @@
 # Each N is run once from its packing to strain 0.2 (runCase, restartable),
 # then, per repetition, a copy of that state from 0.2 to 0.4 under
 # /usr/bin/time -v, the N alternated within a repetition (paired on the
-# shared machine). Rows (user + sys CPU s per strain, wall, peak RSS, steps,
-# mean CG iterations of the window) go to docs/performance/scaling.csv.
+# shared machine). Rows (user + sys CPU s per strain, wall, peak RSS, steps
+# per strain, mean CG iterations of the window) go to
+# docs/performance/scaling.csv.
 #------------------------------------------------------------------------------
 set -u
 root=$(cd "${0%/*}/../.." && pwd)
@@ -26,7 +27,7 @@ for N in $Ns; do
         population/nParticles=$N || exit 1
 done
 
-echo "N,rep,cpu_s_per_strain,wall_s_per_strain,peak_rss_MB,steps,mean_cg_iterations,load1" > "$csv"
+echo "N,rep,cpu_s_per_strain,wall_s_per_strain,peak_rss_MB,steps_per_strain,mean_cg_iterations,load1" > "$csv"
 for rep in $(seq 1 "$reps"); do
     for N in $Ns; do
         w=$runRoot/N$N-window
@@ -47,9 +48,10 @@ for rep in $(seq 1 "$reps"); do
             }
             /^# Time/ { for (i = 1; i <= NF; i++) { if ($i == "steps") cs = i - 1
                                                      if ($i == "cgIterations") cc = i - 1 } }
-            !/^#/ { steps += $cs; cg += $cc; rows++ }
-            END { printf "%d,%d,%.2f,%.2f,%.0f,%d,%.1f,%s\n", N, rep, cpu/span,
-                  wall/span, rss, steps, cg/rows, load }' \
+            !/^#/ { if (!rows) { t0 = $1; s0 = $cs }   # steps: the total so far
+                    t1 = $1; s1 = $cs; cg += $cc; rows++ }
+            END { printf "%d,%d,%.2f,%.2f,%.0f,%.0f,%.1f,%s\n", N, rep, cpu/span,
+                  wall/span, rss, (s1 - s0)/(t1 - t0), cg/rows, load }' \
             "$w/time.txt" "$w"/postProcessing/rheology/*/rheology.dat >> "$csv"
         tail -1 "$csv"
     done

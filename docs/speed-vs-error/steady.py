@@ -5,13 +5,12 @@ postProcessing/rheology/*/rheologySummary.dat), the mean step, the CPU
 seconds per strain, and two differences, each with the error bar of a
 difference of independent runs:
 
-- "difference": a run of the template's lubrication (epsilon, delta) and CG
-  tolerance against the implicitEuler run of the smallest safety (the
-  case's reference); a run with epsilon, delta, the tolerance or the
-  normal contact springs changed (-eps, -delta, -tol, -normal in its name)
-  against the run
-  of the same integrator and safety without the change (so that the step's
-  own bias cancels); a run started from a stored steady state (-from<t>)
+- "difference": a run of the template's settings (lubrication epsilon and
+  delta, CG tolerance, normal contact springs) against the implicitEuler
+  run of the smallest safety (the case's reference); a run with some of
+  them changed (-eps, -delta, -tol, -normal in its name) against the run
+  of the same integrator and safety with the most of its changes and no
+  other (so that the step's own bias cancels); a run started from a stored steady state (-from<t>)
   against the reference;
 - "to dt -> 0": against the zero-step limit a of the weighted straight-line
   fit eta_r = a + b dt over the case's implicitEuler runs (first order
@@ -21,6 +20,7 @@ difference of independent runs:
     steady.py RUNROOT      ->  docs/speed-vs-error/steady.csv, steady.md and
                                its table in docs/speed-vs-error.md
 """
+import csv
 import glob
 import math
 import os
@@ -50,16 +50,20 @@ def readRuns(runRoot):
         rows.append(dict(
             case=os.path.basename(os.path.dirname(run)),
             integrator=m.group("integrator"), safety=float(m.group("safety")),
-            variant=" ".join(x for x in (
+            settings=[x for x in (
                 m.group("eps") and "ε = " + m.group("eps"),
                 m.group("delta") and "δ = " + m.group("delta"),
                 m.group("tol") and "CG tolerance " + m.group("tol"),
-                m.group("normal") and "normal contact " + m.group("normal"),
-                m.group("start") and "from strain " + m.group("start")) if x),
+                m.group("normal") and "normal contact " + m.group("normal")) if x],
+            start=m.group("start"),
             deltaT=float(r["deltaT"][-1]) if r is not None else float("nan"),
-            strain=strain, cpu_s_per_strain=cpuSeconds(run)/strain,
+            # a run stopped before its end logs no CPU time: unknown
+            strain=strain, cpu_s_per_strain=(cpuSeconds(run) or float("nan"))/strain,
             etaR=s["mean"], se=s["se"], corr=s["corr"], blocks=s["blocks"],
             used=s["used"], discarded=s["discarded"], trusted=s["trusted"]))
+        row = rows[-1]
+        row["variant"] = ", ".join(row["settings"] + (
+            ["from strain " + row["start"]] if row["start"] else []))
     return rows
 
 
@@ -95,12 +99,24 @@ def analyse(rows):
         fit = zeroStepFit(base) if len(base) > 2 else None
         fits[case] = fit
         for r in own:
+            # A run with settings changed: against the run of the same
+            # integrator and safety with the most of its settings and no
+            # other (so that the step's bias and the settings it shares
+            # cancel); otherwise the reference
             against = ref
-            if r["variant"] and not r["variant"].startswith("from"):
-                same = [b for b in own if not b["variant"]
-                        and b["integrator"] == r["integrator"] and b["safety"] == r["safety"]]
-                against = same[0] if same else ref
-            r["against"] = ("" if r is ref else "%s at safety %g" % (against["integrator"], against["safety"]))
+            if r["settings"] and not r["start"]:
+                subsets = [b for b in own if not b["start"]
+                           and b["integrator"] == r["integrator"] and b["safety"] == r["safety"]
+                           and set(b["settings"]) < set(r["settings"])]
+                if subsets:
+                    # of the largest, the one that differs in the last
+                    # setting (a pair then differs in one setting only)
+                    against = max(subsets, key=lambda b: (
+                        len(b["settings"]),
+                        b["settings"] == r["settings"][:len(b["settings"])]))
+            r["against"] = ("" if r is ref else "%s at safety %g%s" % (
+                against["integrator"], against["safety"],
+                " (" + against["variant"] + ")" if against["variant"] else ""))
             r["bias_pct"], r["bias_err_pct"] = difference(r, against) if r is not ref else (0.0, 0.0)
             if fit:
                 a, aErr = fit[0], fit[1]
@@ -119,10 +135,11 @@ def write(rows, fits):
     cols = ["case", "integrator", "safety", "variant", "deltaT", "strain", "cpu_s_per_strain",
             "etaR", "se", "corr", "blocks", "used", "discarded", "trusted",
             "against", "bias_pct", "bias_err_pct", "bias0_pct", "bias0_err_pct"]
-    with open(os.path.join(here, "steady.csv"), "w") as f:
-        f.write(",".join(cols) + "\n")
+    with open(os.path.join(here, "steady.csv"), "w", newline="") as f:
+        out = csv.writer(f)
+        out.writerow(cols)
         for r in rows:
-            f.write(",".join(str(r[c]) for c in cols) + "\n")
+            out.writerow([r[c] for c in cols])
     pct = lambda x: "" if math.isnan(x) else "%+.2f %%" % x  # noqa: E731
     err = lambda x: "" if math.isnan(x) else "%.2f %%" % x   # noqa: E731
     with open(os.path.join(here, "steady.md"), "w") as f:
@@ -136,14 +153,15 @@ def write(rows, fits):
                 "against | difference | ± | to Δt → 0 | ± | CPU s/strain | trusted |\n")
         f.write("|---|---|---:|---|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|---|\n")
         for r in rows:
-            f.write("| %s | %s | %g | %s | %.3g | %g | %.3g | %.4g | %.2g | %s | %s | %s | %s | %s | %.3g | %s |\n" % (
+            f.write("| %s | %s | %g | %s | %.3g | %g | %.3g | %.4g | %.2g | %s | %s | %s | %s | %s | %s | %s |\n" % (
                 r["case"], r["integrator"], r["safety"], r["variant"], r["deltaT"],
                 r["strain"], r["discarded"], r["etaR"], r["se"],
                 r["against"] or "reference",
                 pct(r["bias_pct"]) if r["against"] else "",
                 err(r["bias_err_pct"]) if r["against"] else "",
                 pct(r["bias0_pct"]), err(r["bias0_err_pct"]),
-                r["cpu_s_per_strain"], r["trusted"]))
+                "" if math.isnan(r["cpu_s_per_strain"]) else "%.3g" % r["cpu_s_per_strain"],
+                r["trusted"]))
         for case, fit in fits.items():
             if fit:
                 f.write("\n%s: zero-step limit (weighted fit ηr = a + b Δt over the mean steps "
