@@ -53,19 +53,23 @@ def main(commit):
         before, now = table(old.stdout.replace("etaN", "trusted")), table(open(path).read())
         if now is None:
             continue
-        chi2, n = 0.0, 0
+        chi2, n, noError = 0.0, 0, 0
         for key in sorted(now):
             if key not in before:
                 continue
             (v, e), (v0, e0) = now[key], before[key]
             sigma = (v - v0)/math.hypot(e, e0)
-            chi2 += sigma**2
-            n += 1
+            if math.isnan(sigma):
+                noError += 1    # a mean without an error bar (too short)
+            else:
+                chi2 += sigma**2
+                n += 1
             rows.append([case, key[0], key[1], v, e, v0, e0, sigma])
-            md.append("| %s | %s, %g | %.4g | %.2g | %.4g | %.2g | %+.1f |" % (
-                case, key[0], key[1], v, e, v0, e0, sigma))
-        if n:
-            totals.append("%s: χ² = %.1f for %d points" % (case, chi2, n))
+            md.append(("| %s | %s, %g | %.4g | %.2g | %.4g | %.2g | %+.1f |" % (
+                case, key[0], key[1], v, e, v0, e0, sigma)).replace("| +nan |", "| – |"))
+        if n or noError:
+            totals.append("%s: χ² = %.1f for %d points%s" % (
+                case, chi2, n, " (%d more without an error bar)" % noError if noError else ""))
     md.append("\n" + "; ".join(totals) + ".")
     writeRowsAndTable(os.path.join(here, "compare"),
                       "case,setting,x,etaR,error,etaR_before,error_before,sigmas", rows, md)

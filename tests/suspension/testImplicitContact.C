@@ -733,9 +733,9 @@ TEST(ImplicitContact, SlidingFrictionLimitIsTheChatterThresholdOfASlidingContact
     // the cap and nothing driving it: overdamped, that force moves it back
     // along the tangential mode b, the stretch becomes xi (1 - dt k_t
     // b.R^-1 b), which sticks again within the cap only for dt < t_s =
-    // 2/(k_t b.R^-1 b). slidingFriction is 5 t_s, so the default safety
-    // 0.2 steps at t_s: below it the friction relaxes, above it flips from
-    // cap to cap every step (chatter)
+    // 2/(k_t b.R^-1 b). slidingFriction is 2.5 t_s, so the default safety
+    // 0.2 steps at t_s/2: below t_s the friction relaxes, above it flips
+    // from cap to cap every step (chatter)
     auto limit = [](const TimeStepLimits& l, const std::string& name)
     {
         for (const TimeStepLimit& t : l.all())
@@ -753,9 +753,9 @@ TEST(ImplicitContact, SlidingFrictionLimitIsTheChatterThresholdOfASlidingContact
     const double ts = explicitContactLimit(R, tangentialMode(), c.kt, 0, false);
 
     const TimeStepLimits limits(models, 1.0, 1.0, rho, 0.2, Integrator::overdamped, 1.0);
-    EXPECT_NEAR(limit(limits, "slidingFriction"), 5*ts, 1e-6*ts);
+    EXPECT_NEAR(limit(limits, "slidingFriction"), 2.5*ts, 1e-6*ts);
     EXPECT_EQ(limits.binding().name, "slidingFriction");
-    EXPECT_NEAR(limits.deltaT(), ts, 1e-6*ts);
+    EXPECT_NEAR(limits.deltaT(), 0.5*ts, 1e-6*ts);
 
     const double cap = c.muC*F/c.kt;
     const double hEq = -F/c.kn;
@@ -783,7 +783,7 @@ TEST(ImplicitContact, SlidingFrictionLimitIsTheChatterThresholdOfASlidingContact
     EXPECT_NEAR
     (
         limit(inertial, "slidingFriction"),
-        5*explicitContactLimit(R, tangentialMode(), c.kt, 0, true),
+        2.5*explicitContactLimit(R, tangentialMode(), c.kt, 0, true),
         1e-6*ts
     );
     FrictionalContact::Params rolling = c;
@@ -800,7 +800,7 @@ TEST(ImplicitContact, SlidingFrictionLimitIsTheChatterThresholdOfASlidingContact
             TimeStepLimits(withRollingFriction, 1.0, 1.0, rho, 0.2, Integrator::overdamped, 1.0),
             "slidingFriction"
         ),
-        5*explicitContactLimit(R, rollingMode, rolling.kr, 0, false),
+        2.5*explicitContactLimit(R, rollingMode, rolling.kr, 0, false),
         1e-6*ts
     );
 
