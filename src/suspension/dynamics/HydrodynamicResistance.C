@@ -187,11 +187,13 @@ namespace
 HydrodynamicResistance::HydrodynamicResistance
 (
     const StokesDrag& drag,
-    const Lubrication* lubrication
+    const Lubrication* lubrication,
+    bool implicitNormalContact
 )
 :
     drag_(drag),
-    lubrication_()
+    lubrication_(),
+    implicitNormalContact_(implicitNormalContact)
 {
     if (lubrication)
     {
@@ -325,21 +327,32 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
         }
     }
 
-    // The contacts, their index and the diagonal blocks of their springs
-    contacts_.resize(contacts.size());
-    contactRows_.resize(contacts.size());
+    // The contacts with a spring in the operator (all, or with the normal
+    // springs explicit those with a sticking tangential or rolling one),
+    // their index and the diagonal blocks of their springs
+    contacts_.clear();
     contactIndex_.offset.assign(N + 1, 0);
-    contactIndex_.j.resize(contacts.size());
-    for (std::size_t s = 0; s < contacts.size(); ++s)
+    contactIndex_.j.clear();
+    for (const LinearisedContact& c : contacts)
     {
-        const LinearisedContact& c = contacts[s];
-        contacts_[s] = Contact
+        ContactStiffness k = c.k;
+        if (!implicitNormalContact_)
         {
-            c.n, c.ai, c.aj, 2*c.ai*c.aj/(c.ai + c.aj), c.dUinf, c.k, 0, 0, 0
-        };
-        contactIndex_.j[s] = c.j;
+            k.kn = 0;
+            k.gammaN = 0;
+            if (k.kt == 0 && k.kr == 0)
+            {
+                continue;
+            }
+        }
+        contacts_.push_back
+        ({
+            c.n, c.ai, c.aj, 2*c.ai*c.aj/(c.ai + c.aj), c.dUinf, k, 0, 0, 0
+        });
+        contactIndex_.j.push_back(c.j);
         ++contactIndex_.offset[c.i + 1];
     }
+    contactRows_.resize(contacts_.size());
     for (std::size_t i = 0; i < N; ++i)
     {
         contactIndex_.offset[i + 1] += contactIndex_.offset[i];

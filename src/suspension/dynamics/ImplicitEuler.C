@@ -12,8 +12,7 @@ ImplicitEuler::ImplicitEuler
 )
 :
     inertia_(inertia),
-    implicitNormalContact_(implicitNormalContact),
-    resistance_(models.drag(), models.get<Lubrication>()),
+    resistance_(models.drag(), models.get<Lubrication>(), implicitNormalContact),
     solver_(solver),
     iterations_(0)
 {}
@@ -29,26 +28,8 @@ void ImplicitEuler::evaluate
     ForceSummary& summary
 )
 {
-    if (!implicitNormalContact_)
-    {
-        // The normal springs explicit: the sticking tangential and rolling
-        // ones only, in the same order
-        implicitContacts_.clear();
-        for (LinearisedContact c : contacts)
-        {
-            c.k.kn = 0;
-            c.k.gammaN = 0;
-            if (c.k.kt > 0 || c.k.kr > 0)
-            {
-                implicitContacts_.push_back(c);
-            }
-        }
-    }
-    const HydrodynamicResistance::Stresslets S = resistance_.assemble
-    (
-        p, box, ambient, pairs,
-        implicitNormalContact_ ? contacts : implicitContacts_
-    );
+    const HydrodynamicResistance::Stresslets S =
+        resistance_.assemble(p, box, ambient, pairs, contacts);
     summary.stresslet[contributionIndex("stokes")] = S.stokes;
     summary.stresslet[contributionIndex(Lubrication::contribution)] = S.lubrication;
 }
