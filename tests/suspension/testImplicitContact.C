@@ -968,6 +968,61 @@ TEST(ImplicitContact, RestartIsBitwise)
 }
 
 
+TEST(ImplicitContact, WarmStartCarriesTheLastRateOfChange)
+{
+    // Each step stores (u^(n+1) - u^n)/dt and that of omega; the next
+    // solve starts from V'^n + dt of them. From a sheared state with
+    // contacts, over 40 steps the extrapolated warm start takes fewer CG
+    // iterations than V'^n alone (the rates zeroed before every step),
+    // both solved to the same tolerance
+    const Suspension s(Integrator::implicitEuler);
+    Simulation sheared = s.make();
+    sheared.start(0);
+    sheared.advance(0.1);
+    ASSERT_GT(sheared.implicit()->resistance().nContacts(), 0u);
+
+    std::uint64_t iterations[2];
+    for (const bool extrapolate : {true, false})
+    {
+        Simulation sim(sheared.particles(), sheared.box(), s.flow, s.models, s.params);
+        sim.pairs() = sheared.pairs();
+        sim.start(sheared.time(), true);
+        const double dt = sim.deltaT();
+        const std::uint64_t before = sim.implicit()->iterations();
+        for (int k = 0; k < 40; ++k)
+        {
+            Particles& p = sim.particles();
+            if (!extrapolate)
+            {
+                std::fill(p.dudt.begin(), p.dudt.end(), Vec3::Zero());
+                std::fill(p.domegadt.begin(), p.domegadt.end(), Vec3::Zero());
+            }
+            const std::vector<Vec3> u = p.u;
+            const std::vector<Vec3> omega = p.omega;
+            const std::vector<std::int64_t> id = p.id;
+            sim.step(dt);
+            if (sim.particles().id != id)
+            {
+                continue;   // re-sorted by a list rebuild
+            }
+            for (std::size_t i = 0; i < u.size(); ++i)
+            {
+                const Vec3 a = (sim.particles().u[i] - u[i])/dt;
+                const Vec3 alpha = (sim.particles().omega[i] - omega[i])/dt;
+                EXPECT_LE((sim.particles().dudt[i] - a).norm(), 1e-8*(1 + a.norm()));
+                EXPECT_LE
+                (
+                    (sim.particles().domegadt[i] - alpha).norm(),
+                    1e-8*(1 + alpha.norm())
+                );
+            }
+        }
+        iterations[extrapolate] = sim.implicit()->iterations() - before;
+    }
+    EXPECT_LT(iterations[true], iterations[false]);
+}
+
+
 TEST(ImplicitContact, BitwiseAcrossThreadCounts)
 {
     // The implicit product with contacts and whole steps (right-hand side,

@@ -15,8 +15,12 @@
 # LF_DEM is linked (with --no-as-needed and a runpath) against the BLAS and LAPACK of
 # the serial OpenBLAS folder, so it uses the serial OpenBLAS whatever the system's
 # libblas.so.3/liblapack.so.3 alternatives point to (checked at the end with LD_DEBUG).
+# LF_DEM is compiled with the instruction-set flags our code is built with,
+# WSF_ARCH_FLAGS (etc/bashrc; -march=native unless set), so that both codes
+# run the same instructions: set WSF_ARCH_FLAGS= to build both for any x86-64.
 # The binary is LF_DEM_SOURCE_TREE/LF_DEM/LF_DEM.
 set -euo pipefail
+arch=${WSF_ARCH_FLAGS--march=native}
 
 src=${1:?usage: build.sh LF_DEM_SOURCE_TREE [COMMIT]}
 src=$(cd "$src" && pwd)
@@ -56,7 +60,7 @@ CXX = g++
 override_default_cholmod = true
 Cholmod_path = -I /usr/include/suitesparse
 Cholmod_Linking_Flags = -lcholmod
-CXXFLAGS_EXTRA = -DGIT_VERSION='"$commit"'
+CXXFLAGS_EXTRA = -DGIT_VERSION='"$commit"' $arch
 Lapack_Linking_Flags = -L$ob -Wl,-rpath,$ob -Wl,--no-as-needed -llapack
 Blas_Linking_Flags = -lblas
 Extra_Linking_Flags =
@@ -65,7 +69,6 @@ EOF
 cd "$src/LF_DEM"
 make clean >/dev/null
 # Makefile default target: -O3 -Wall -std=c++11 (+ CXXFLAGS_EXTRA)
-# Makefile default target: -O3 -Wall -std=c++11 (+ CXXFLAGS_EXTRA)
 if ! make -j"${JOBS:-1}" all > build.log 2>&1; then tail -40 build.log >&2; echo "LF_DEM did not build (log: $src/LF_DEM/build.log)" >&2; exit 1; fi
 echo "compile lines:"; grep -E '^g\+\+' build.log | sed -n '1p;$p'
 echo "warnings: $(grep -c 'warning:' build.log || true) (log: $src/LF_DEM/build.log)"
@@ -73,7 +76,7 @@ echo "warnings: $(grep -c 'warning:' build.log || true) (log: $src/LF_DEM/build.
 
 echo "LF_DEM commit: $commit"
 echo "binary: $src/LF_DEM/LF_DEM"
-echo "compiler: $(g++ --version | head -1)"
+echo "compiler: $(g++ --version | head -1), instruction set: ${arch:-x86-64}"
 echo "packages: $(dpkg-query -W -f='${Package}=${Version} ' libsuitesparse-dev libcholmod3 libopenblas0-serial 2>/dev/null)"
 echo "libraries loaded at run time:"
 LD_DEBUG=libs ./LF_DEM -h 2>&1 | grep 'calling init' | grep -E 'blas|lapack|cholmod|gomp' | sed 's/.*calling init: /  /'

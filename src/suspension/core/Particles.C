@@ -43,6 +43,8 @@ void Particles::add
     omega.push_back(Vec3::Zero());
     F.push_back(Vec3::Zero());
     T.push_back(Vec3::Zero());
+    dudt.push_back(Vec3::Zero());
+    domegadt.push_back(Vec3::Zero());
     a.push_back(radius);
     m.push_back(mass);
     I.push_back(0.4*mass*radius*radius);
@@ -57,6 +59,8 @@ void Particles::permute(const std::vector<std::size_t>& order)
     permuteArray(omega, order);
     permuteArray(F, order);
     permuteArray(T, order);
+    permuteArray(dudt, order);
+    permuteArray(domegadt, order);
     permuteArray(a, order);
     permuteArray(m, order);
     permuteArray(I, order);

@@ -47,7 +47,7 @@ void ImplicitEuler::solve
     const double invDt = inertia_ ? 1/dt : 0;
     resistance_.setStep(p, dt, inertia_);
 
-    // Warm start V'^n and right-hand side, relative to the flow at x^n
+    // V'^n and the right-hand side, relative to the flow at x^n
     const Eigen::VectorXd& Famb = resistance_.ambientForces();
     v_.resize(6*N);
     b_.resize(6*N);
@@ -65,14 +65,27 @@ void ImplicitEuler::solve
     // The springs' load by the ambient motion and the dashpot's of V'^n
     resistance_.contactRightHandSide(v_, ambient, dt, b_);
 
+    // Warm start: V'^n + dt (V'^n - V'^(n-1))/dt_(n-1), the last step's
+    // rate of change carried on
+    #pragma omp parallel for schedule(static) if(parallel)
+    for (std::size_t i = 0; i < N; ++i)
+    {
+        v_.segment<3>(6*i) += dt*p.dudt[i];
+        v_.segment<3>(6*i + 3) += dt*p.domegadt[i];
+    }
+
     statistics_ = solver_.solve(resistance_, b_, v_);
     iterations_ += statistics_.iterations;
 
     #pragma omp parallel for schedule(static) if(parallel)
     for (std::size_t i = 0; i < N; ++i)
     {
-        p.u[i] = ambient[i].U + v_.segment<3>(6*i);
-        p.omega[i] = ambient[i].Omega() + v_.segment<3>(6*i + 3);
+        const Vec3 u = ambient[i].U + v_.segment<3>(6*i);
+        const Vec3 w = ambient[i].Omega() + v_.segment<3>(6*i + 3);
+        p.dudt[i] = (u - p.u[i])/dt;
+        p.domegadt[i] = (w - p.omega[i])/dt;
+        p.u[i] = u;
+        p.omega[i] = w;
     }
 }
 

@@ -3,6 +3,7 @@
 #include "boundBox.H"
 
 #include <omp.h>
+#include <sys/resource.h>
 
 #include <cmath>
 #include <cstdio>
@@ -349,7 +350,8 @@ void Foam::suspensionCloud::reportProgress()
         Info<< "  steps set by";
         reportStepLimits();
     }
-    Info<< "  ETA " << clockTime(max(toGo, 0)*elapsed/done).c_str() << endl;
+    Info<< "  CPU " << runTime_.elapsedCpuTime() << " s"
+        << "  ETA " << clockTime(max(toGo, 0)*elapsed/done).c_str() << endl;
 
     reported_ = now;
     reportedSteps_ = sim.steps();
@@ -594,6 +596,13 @@ void Foam::suspensionCloud::reportKernelTimes() const
     Info<< "    total " << total << " s over " << label(sim_->steps())
         << " steps, " << 1e9*total/particleSteps << " ns per particle-step"
         << nl;
+
+    // The process's peak resident set, as /usr/bin/time -v reports it
+    struct rusage usage;
+    if (getrusage(RUSAGE_SELF, &usage) == 0)
+    {
+        Info<< "Peak resident memory " << usage.ru_maxrss/1024.0 << " MB" << nl;
+    }
     if (sim_->adaptive())
     {
         Info<< "Steps set by (share of the steps):";

@@ -122,6 +122,25 @@ Field<Type> readField
 }
 
 
+//- As readField, or n zeros when the file is absent (a field added since
+//  the cloud was written)
+template<class Type>
+Field<Type> readFieldOrZero
+(
+    const IOobject& io,
+    const label n,
+    const suspensionIO::state& s
+)
+{
+    IOobject probe(io);
+    if (!probe.typeHeaderOk<IOField<Type>>(true))
+    {
+        return Field<Type>(n, Zero);
+    }
+    return readField<Type>(io, n, s);
+}
+
+
 vectorField toFoamField(const std::vector<Vec3>& v)
 {
     vectorField f(label(v.size()));
@@ -222,6 +241,8 @@ suspension::Particles Foam::suspensionIO::readParticles
     const vectorField omega(readField<vector>(read("omega"), n, s));
     const vectorField F(readField<vector>(read("F"), n, s));
     const vectorField T(readField<vector>(read("T"), n, s));
+    const vectorField dUdt(readFieldOrZero<vector>(read("dUdt"), n, s));
+    const vectorField dOmegadt(readFieldOrZero<vector>(read("dOmegadt"), n, s));
     const labelField id(readField<label>(read("origId"), n, s));
 
     suspension::Particles p;
@@ -256,6 +277,8 @@ suspension::Particles Foam::suspensionIO::readParticles
         p.omega.back() = toEigen(omega[i]);
         p.F.back() = toEigen(F[i]);
         p.T.back() = toEigen(T[i]);
+        p.dudt.back() = toEigen(dUdt[i]);
+        p.domegadt.back() = toEigen(dOmegadt[i]);
     }
 
     std::vector<std::int64_t> ids(p.id);
@@ -447,6 +470,8 @@ void Foam::suspensionIO::write
     writeField(particleOut("omega"), toFoamField(p.omega));
     writeField(particleOut("F"), toFoamField(p.F));
     writeField(particleOut("T"), toFoamField(p.T));
+    writeField(particleOut("dUdt"), toFoamField(p.dudt));
+    writeField(particleOut("dOmegadt"), toFoamField(p.domegadt));
     writeField(particleOut("S"), Sp);
 
     // Contact history, oriented as the slots of the pair list

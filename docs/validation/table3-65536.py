@@ -1,0 +1,156 @@
+#!/usr/bin/python3
+"""The paper's fig. 10 from the runs of docs/validation/table3-65536.sh.
+
+    docs/validation/table3-65536.py
+
+For Table 3 NW and YW at N = 65536 (run/validation/table3-65536/<case>):
+the eta_r histories of both; the particle and ambient streamwise velocity
+and the local shear rate across y, averaged over the write times after the
+discarded start-up; the steady eta_r with its error bar (the solver's own
+rheologySummary.dat: MSER-5 start-up, blocks of two correlation strains);
+the CPU seconds per strain (from the progress lines, which carry the
+process's CPU seconds: the difference between the first and the last line
+of each chunk over its strain, summed over the chunks, so the set-up and
+any strain redone after a stop are not counted twice); the peak resident
+memory (the solver's end-of-run line, from getrusage as /usr/bin/time -v).
+Writes docs/validation/table3-65536.csv and .png and the table between
+<!-- table:table3-65536 --> in docs/validation.md.
+"""
+import glob
+import math
+import os
+import re
+import sys
+
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import numpy as np
+
+here = os.path.dirname(os.path.abspath(__file__))
+root = os.path.dirname(os.path.dirname(here))
+sys.path.insert(0, os.path.dirname(here))
+sys.path.insert(0, here)
+from analyse import readProfiles  # noqa: E402
+from rheologydata import (fillTables, readRheology, readSummaries,  # noqa: E402
+                          wallSeconds, writeCsv)
+
+runs = os.path.join(os.environ.get("WSF_VALIDATION_DIR", os.path.join(root, "run", "validation")),
+                    "table3-65536")
+CASES = ("NW", "YW")
+COLUMNS = ["case", "strain", "etaR", "etaR_error", "discarded_strain", "correlation_strain",
+           "trusted", "N1", "N1_error", "N2", "N2_error", "steps_per_strain", "threads",
+           "cpu_s_per_strain", "wall_s", "peak_rss_MB"]
+
+
+def chunks(case):
+    """Per solver log: (strains, CPU seconds) of its progress lines, threads, peak RSS"""
+    out = []
+    for log in sorted(glob.glob(os.path.join(case, "log.wavyShearFoam.*")),
+                      key=lambda f: int(f.rsplit(".", 1)[1])):
+        strain, cpu, threads, rss, steps = [], [], float("nan"), float("nan"), float("nan")
+        with open(log) as fh:
+            for line in fh:
+                m = re.match(r"strain (\S+) .* CPU (\S+) s", line)
+                if m:
+                    strain.append(float(m.group(1)))
+                    cpu.append(float(m.group(2)))
+                m = re.match(r"\s+threads\s+(\d+)", line)
+                if m:
+                    threads = int(m.group(1))
+                m = re.match(r"\s+outer step\s+(\S+) = (\d+) steps of dt and one", line)
+                if m:
+                    steps = (int(m.group(2)) + 1)/float(m.group(1))
+                m = re.match(r"Peak resident memory (\S+) MB", line)
+                if m:
+                    rss = float(m.group(1))
+        out.append(dict(strain=np.array(strain), cpu=np.array(cpu), threads=threads,
+                        rss=rss, steps=steps))
+    return out
+
+
+def analyse(name):
+    case = os.path.join(runs, name)
+    parts = chunks(case)
+    if not parts:
+        return None
+    s = readSummaries(case) or {}
+    e = s.get("etaR", {})
+    dS = sum(p["strain"][-1] - p["strain"][0] for p in parts if len(p["strain"]) > 1)
+    dC = sum(p["cpu"][-1] - p["cpu"][0] for p in parts if len(p["strain"]) > 1)
+    history = readRheology(case)
+    row = {"case": name,
+           "strain": float(history["strain"][-1]) if history is not None else float("nan"),
+           "etaR": e.get("mean", float("nan")), "etaR_error": e.get("se", float("nan")),
+           "discarded_strain": e.get("discarded", float("nan")),
+           "correlation_strain": e.get("corr", float("nan")),
+           "trusted": e.get("trusted", "no"),
+           "steps_per_strain": parts[-1]["steps"],
+           "threads": parts[-1]["threads"],
+           "cpu_s_per_strain": dC/dS if dS > 0 else float("nan"),
+           "wall_s": wallSeconds(case),
+           "peak_rss_MB": max((p["rss"] for p in parts if not math.isnan(p["rss"])),
+                              default=float("nan"))}
+    for q in ("N1", "N2"):
+        row[q] = s.get(q, {}).get("mean", float("nan"))
+        row[q + "_error"] = s.get(q, {}).get("se", float("nan"))
+    start = e.get("discarded", 0.0)
+    if math.isnan(start):
+        start = 0.0
+    return row, history, readProfiles(case, start)
+
+
+def markdown(rows):
+    head = ("| case | strain run | eta_r | ± | discarded | correlation strain | trusted | N1 | N2 "
+            "| steps per strain | threads | CPU s per strain | peak RSS MB |\n"
+            "|---|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|\n")
+    fmt = ("| {case} | {strain:.2f} | {etaR:.3g} | {etaR_error:.2g} | {discarded_strain:.2f} "
+           "| {correlation_strain:.2g} | {trusted} | {N1:.3g} | {N2:.3g} | {steps_per_strain:.0f} "
+           "| {threads} | {cpu_s_per_strain:.0f} | {peak_rss_MB:.0f} |\n")
+    return head + "".join(fmt.format(**r) for r in rows)
+
+
+def main():
+    results = {c: analyse(c) for c in CASES}
+    results = {c: r for c, r in results.items() if r is not None}
+    if not results:
+        print(f"no runs under {runs} (docs/validation/table3-65536.sh)")
+        return
+    fig, axes = plt.subplots(1, 3, figsize=(13, 3.8))
+    for name, (row, history, profile) in results.items():
+        if history is not None:
+            axes[0].plot(history["strain"], history["etaR"], lw=0.8, label=name)
+        if profile is None:
+            continue
+        prof, n = profile
+        y, ux, uinf, rate = prof[:, 0], prof[:, 3], prof[:, 4], prof[:, 5]
+        axes[1].plot(ux, y, "o", ms=3, label=f"{name}: particles ({n} writes)")
+        axes[1].plot(uinf, y, "-", label=f"{name}: $U_\\infty$")
+        axes[2].plot(np.gradient(ux, y[1] - y[0]), y, "o", ms=3,
+                     label=f"{name}: d$u_x$/dy of particles")
+        axes[2].plot(rate, y, "-", label=f"{name}: d$U_\\infty$/dy")
+    axes[0].set_xlabel(r"strain $\dot\gamma t$")
+    axes[0].set_ylabel(r"$\eta_r$")
+    axes[0].set_yscale("log")
+    axes[0].legend(fontsize=8)
+    axes[0].set_title("Table 3, N = 65536: same initial condition")
+    axes[1].set_xlabel(r"$u_x/(\dot\gamma a_0)$")
+    axes[1].set_ylabel(r"$y/a_0$")
+    axes[1].legend(fontsize=6)
+    axes[1].set_title("streamwise velocity (fig. 10)")
+    axes[2].set_xlabel(r"local shear rate$/\dot\gamma$")
+    axes[2].legend(fontsize=6)
+    fig.tight_layout()
+    fig.savefig(os.path.join(here, "table3-65536.png"), dpi=120)
+    plt.close(fig)
+
+    rows = [r[0] for r in results.values()]
+    path = writeCsv(os.path.join(here, "table3-65536.csv"), rows, COLUMNS)
+    table = (f"Table written by `docs/validation/table3-65536.py` from "
+             f"`{os.path.relpath(path, root)}`:\n\n" + markdown(rows))
+    print(table)
+    fillTables(os.path.join(root, "docs", "validation.md"), {"table3-65536": table})
+
+
+if __name__ == "__main__":
+    main()
