@@ -12,7 +12,8 @@ the CPU seconds per strain (from the progress lines, which carry the
 process's CPU seconds: the difference between the first and the last line
 of each chunk over its strain, summed over the chunks, so the set-up and
 any strain redone after a stop are not counted twice); the peak resident
-memory (the solver's end-of-run line, from getrusage as /usr/bin/time -v).
+memory (the largest the progress lines or the end-of-run line give, from
+getrusage as /usr/bin/time -v).
 Writes docs/validation/table3-65536.csv and .png and the table between
 <!-- table:table3-65536 --> in docs/validation.md.
 """
@@ -51,10 +52,12 @@ def chunks(case):
         strain, cpu, threads, rss, steps = [], [], float("nan"), float("nan"), float("nan")
         with open(log) as fh:
             for line in fh:
-                m = re.match(r"strain (\S+) .* CPU (\S+) s", line)
+                m = re.match(r"strain (\S+) .* CPU (\S+) s(  peak RSS (\d+) MB)?", line)
                 if m:
                     strain.append(float(m.group(1)))
                     cpu.append(float(m.group(2)))
+                    if m.group(4):
+                        rss = max(float(m.group(4)), 0 if math.isnan(rss) else rss)
                 m = re.match(r"\s+threads\s+(\d+)", line)
                 if m:
                     threads = int(m.group(1))
@@ -63,7 +66,7 @@ def chunks(case):
                     steps = (int(m.group(2)) + 1)/float(m.group(1))
                 m = re.match(r"Peak resident memory (\S+) MB", line)
                 if m:
-                    rss = float(m.group(1))
+                    rss = max(float(m.group(1)), 0 if math.isnan(rss) else rss)
         out.append(dict(strain=np.array(strain), cpu=np.array(cpu), threads=threads,
                         rss=rss, steps=steps))
     return out

@@ -907,8 +907,9 @@ functionObjectsOff)
             [ ! -e "$work/c/$t/$f" ] || fail "$t: $f written"
         done
     done
-    grep -q "^strain .* CPU [0-9.e+-]* s  ETA" "$work/c/log.wavyShearFoam" \
-        || fail "no progress report with the CPU time"
+    grep -q "^strain .* CPU [0-9.e+-]* s  peak RSS [0-9]* MB  ETA" \
+        "$work/c/log.wavyShearFoam" \
+        || fail "no progress report with the CPU time and memory"
     grep -q "^Peak resident memory [0-9.]* MB" "$work/c/log.wavyShearFoam" \
         || fail "no peak resident memory at the end"
     ;;

@@ -314,6 +314,18 @@ void Foam::suspensionCloud::reportStart() const
 }
 
 
+namespace
+{
+    //- The process's peak resident set in MB, as /usr/bin/time -v reports
+    //  it (getrusage), 0 if unknown
+    double peakResidentMB()
+    {
+        struct rusage usage;
+        return getrusage(RUSAGE_SELF, &usage) == 0 ? usage.ru_maxrss/1024.0 : 0;
+    }
+}
+
+
 void Foam::suspensionCloud::reportProgress()
 {
     const suspension::Simulation& sim = *sim_;
@@ -350,7 +362,8 @@ void Foam::suspensionCloud::reportProgress()
         Info<< "  steps set by";
         reportStepLimits();
     }
-    Info<< "  CPU " << runTime_.elapsedCpuTime() << " s"
+    Info<< "  CPU " << runTime_.elapsedCpuTime() << " s  peak RSS "
+        << label(peakResidentMB() + 0.5) << " MB"
         << "  ETA " << clockTime(max(toGo, 0)*elapsed/done).c_str() << endl;
 
     reported_ = now;
@@ -596,13 +609,7 @@ void Foam::suspensionCloud::reportKernelTimes() const
     Info<< "    total " << total << " s over " << label(sim_->steps())
         << " steps, " << 1e9*total/particleSteps << " ns per particle-step"
         << nl;
-
-    // The process's peak resident set, as /usr/bin/time -v reports it
-    struct rusage usage;
-    if (getrusage(RUSAGE_SELF, &usage) == 0)
-    {
-        Info<< "Peak resident memory " << usage.ru_maxrss/1024.0 << " MB" << nl;
-    }
+    Info<< "Peak resident memory " << peakResidentMB() << " MB" << nl;
     if (sim_->adaptive())
     {
         Info<< "Steps set by (share of the steps):";
