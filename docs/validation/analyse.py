@@ -207,6 +207,40 @@ def readProfiles(case, start):
     return np.mean(files, axis=0), len(files)
 
 
+def plotFig10(histories, profiles, title, path):
+    """The paper's fig. 10: eta_r histories ({label: readRheology}), and
+    from the mean profiles ({label: readProfiles}) the particles' and the
+    ambient streamwise velocity and shear rate across y"""
+    fig, axes = plt.subplots(1, 3, figsize=(13, 3.8))
+    for label, h in histories.items():
+        if h is not None:
+            axes[0].plot(h["strain"], h["etaR"], lw=0.8, label=label)
+    for label, p in profiles.items():
+        if p is None:
+            continue
+        prof, n = p
+        y, ux, uinf, rate = prof[:, 0], prof[:, 3], prof[:, 4], prof[:, 5]
+        axes[1].plot(ux, y, "o", ms=4, label=f"{label}: particles ({n} times)")
+        axes[1].plot(uinf, y, "-", label=f"{label}: $U_\\infty$")
+        local = np.gradient(ux, y[1] - y[0])
+        axes[2].plot(local, y, "o", ms=4, label=f"{label}: d$u_x$/dy of particles")
+        axes[2].plot(rate, y, "-", label=f"{label}: d$U_\\infty$/dy")
+    axes[0].set_xlabel(r"strain $\dot\gamma t$")
+    axes[0].set_ylabel(r"$\eta_r$")
+    axes[0].set_yscale("log")
+    axes[0].legend(fontsize=8)
+    axes[0].set_title(title)
+    axes[1].set_xlabel(r"$u_x/(\dot\gamma a_0)$")
+    axes[1].set_ylabel(r"$y/a_0$")
+    axes[1].legend(fontsize=6)
+    axes[1].set_title("streamwise velocity (fig. 10)")
+    axes[2].set_xlabel(r"local shear rate$/\dot\gamma$")
+    axes[2].legend(fontsize=6)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+
+
 def wavy():
     rows = []
     histories = {}
@@ -222,34 +256,8 @@ def wavy():
         profiles[label] = readProfiles(dirs[0], start)
     if not rows:
         return []
-    fig, axes = plt.subplots(1, 3, figsize=(13, 3.8))
-    for label, h in histories.items():
-        axes[0].plot(h["strain"], h["etaR"], label=label)
-    axes[0].set_xlabel(r"strain $\dot\gamma t$")
-    axes[0].set_ylabel(r"$\eta_r$")
-    axes[0].set_yscale("log")
-    axes[0].legend(fontsize=8)
-    axes[0].set_title("Table 3: same initial condition")
-    for label, p in profiles.items():
-        if p is None:
-            continue
-        prof, n = p
-        y, ux, uinf, rate = prof[:, 0], prof[:, 3], prof[:, 4], prof[:, 5]
-        axes[1].plot(ux, y, "o", ms=4, label=f"{label}: particles ({n} times)")
-        axes[1].plot(uinf, y, "-", label=f"{label}: $U_\\infty$")
-        dy = y[1] - y[0]
-        local = np.gradient(ux, dy)
-        axes[2].plot(local, y, "o", ms=4, label=f"{label}: d$u_x$/dy of particles")
-        axes[2].plot(rate, y, "-", label=f"{label}: d$U_\\infty$/dy")
-    axes[1].set_xlabel(r"$u_x/(\dot\gamma a_0)$")
-    axes[1].set_ylabel(r"$y/a_0$")
-    axes[1].legend(fontsize=6)
-    axes[1].set_title("streamwise velocity (fig. 10)")
-    axes[2].set_xlabel(r"local shear rate$/\dot\gamma$")
-    axes[2].legend(fontsize=6)
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "wavy.png"), dpi=120)
-    plt.close(fig)
+    plotFig10(histories, profiles, "Table 3: same initial condition",
+              os.path.join(out, "wavy.png"))
     return rows
 
 

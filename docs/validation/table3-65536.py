@@ -23,16 +23,13 @@ import os
 import re
 import sys
 
-import matplotlib
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt
 import numpy as np
 
 here = os.path.dirname(os.path.abspath(__file__))
 root = os.path.dirname(os.path.dirname(here))
 sys.path.insert(0, os.path.dirname(here))
 sys.path.insert(0, here)
-from analyse import readProfiles  # noqa: E402
+from analyse import plotFig10, readProfiles  # noqa: E402
 from rheologydata import (fillTables, readRheology, readSummaries,  # noqa: E402
                           wallSeconds, writeCsv)
 
@@ -119,33 +116,9 @@ def main():
     if not results:
         print(f"no runs under {runs} (docs/validation/table3-65536.sh)")
         return
-    fig, axes = plt.subplots(1, 3, figsize=(13, 3.8))
-    for name, (row, history, profile) in results.items():
-        if history is not None:
-            axes[0].plot(history["strain"], history["etaR"], lw=0.8, label=name)
-        if profile is None:
-            continue
-        prof, n = profile
-        y, ux, uinf, rate = prof[:, 0], prof[:, 3], prof[:, 4], prof[:, 5]
-        axes[1].plot(ux, y, "o", ms=3, label=f"{name}: particles ({n} writes)")
-        axes[1].plot(uinf, y, "-", label=f"{name}: $U_\\infty$")
-        axes[2].plot(np.gradient(ux, y[1] - y[0]), y, "o", ms=3,
-                     label=f"{name}: d$u_x$/dy of particles")
-        axes[2].plot(rate, y, "-", label=f"{name}: d$U_\\infty$/dy")
-    axes[0].set_xlabel(r"strain $\dot\gamma t$")
-    axes[0].set_ylabel(r"$\eta_r$")
-    axes[0].set_yscale("log")
-    axes[0].legend(fontsize=8)
-    axes[0].set_title("Table 3, N = 65536: same initial condition")
-    axes[1].set_xlabel(r"$u_x/(\dot\gamma a_0)$")
-    axes[1].set_ylabel(r"$y/a_0$")
-    axes[1].legend(fontsize=6)
-    axes[1].set_title("streamwise velocity (fig. 10)")
-    axes[2].set_xlabel(r"local shear rate$/\dot\gamma$")
-    axes[2].legend(fontsize=6)
-    fig.tight_layout()
-    fig.savefig(os.path.join(here, "table3-65536.png"), dpi=120)
-    plt.close(fig)
+    plotFig10({c: r[1] for c, r in results.items()}, {c: r[2] for c, r in results.items()},
+              "Table 3, N = 65536: same initial condition",
+              os.path.join(here, "table3-65536.png"))
 
     rows = [r[0] for r in results.values()]
     path = writeCsv(os.path.join(here, "table3-65536.csv"), rows, COLUMNS)

@@ -274,6 +274,15 @@ namespace
                 models, params
             );
         }
+
+        //- Sheared to strain 0.1, when it has contacts with history
+        Simulation sheared() const
+        {
+            Simulation sim = make();
+            sim.start(0);
+            sim.advance(0.1);
+            return sim;
+        }
     };
 }
 
@@ -976,9 +985,7 @@ TEST(ImplicitContact, WarmStartCarriesTheLastRateOfChange)
     // iterations than V'^n alone (the rates zeroed before every step),
     // both solved to the same tolerance
     const Suspension s(Integrator::implicitEuler);
-    Simulation sheared = s.make();
-    sheared.start(0);
-    sheared.advance(0.1);
+    const Simulation sheared = s.sheared();
     ASSERT_GT(sheared.implicit()->resistance().nContacts(), 0u);
 
     std::uint64_t iterations[2];
@@ -1029,9 +1036,7 @@ TEST(ImplicitContact, BitwiseAcrossThreadCounts)
     // solve, kernels) are bitwise the same on one and two threads
     // (core/Parallel.H); from a sheared state with contacts
     const Suspension s(Integrator::implicitEuler);
-    Simulation sheared = s.make();
-    sheared.start(0);
-    sheared.advance(0.1);
+    const Simulation sheared = s.sheared();
     ASSERT_GT(sheared.implicit()->resistance().nContacts(), 0u);
 
     const std::size_t minParticles = setParallelMinParticles(0);
