@@ -65,16 +65,18 @@ void ImplicitEuler::solve
     // The springs' load by the ambient motion and the dashpot's of V'^n
     resistance_.contactRightHandSide(v_, ambient, dt, b_);
 
-    // Warm start: V'^n + dt (V'^n - V'^(n-1))/dt_(n-1), the last step's
-    // rate of change carried on
+    // Warm start: V'^n, moved along the last step's rate of change carried
+    // over this step, d = dt (du/dt, domega/dt), as far as it lowers the
+    // error (ConjugateGradient.H)
+    d_.resize(6*N);
     #pragma omp parallel for schedule(static) if(parallel)
     for (std::size_t i = 0; i < N; ++i)
     {
-        v_.segment<3>(6*i) += dt*p.dudt[i];
-        v_.segment<3>(6*i + 3) += dt*p.domegadt[i];
+        d_.segment<3>(6*i) = dt*p.dudt[i];
+        d_.segment<3>(6*i + 3) = dt*p.domegadt[i];
     }
 
-    statistics_ = solver_.solve(resistance_, b_, v_);
+    statistics_ = solver_.solve(resistance_, b_, v_, &d_);
     iterations_ += statistics_.iterations;
 
     #pragma omp parallel for schedule(static) if(parallel)
