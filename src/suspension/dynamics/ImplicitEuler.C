@@ -47,10 +47,13 @@ void ImplicitEuler::solve
     const double invDt = inertia_ ? 1/dt : 0;
     resistance_.setStep(p, dt, inertia_);
 
-    // V'^n and the right-hand side, relative to the flow at x^n
+    // V'^n and the right-hand side, relative to the flow at x^n, and the
+    // predictor of the warm start, d = dt (du/dt, domega/dt): the last
+    // step's rate of change carried over this step
     const Eigen::VectorXd& Famb = resistance_.ambientForces();
     v_.resize(6*N);
     b_.resize(6*N);
+    d_.resize(6*N);
     #pragma omp parallel for schedule(static) if(parallel)
     for (std::size_t i = 0; i < N; ++i)
     {
@@ -60,22 +63,15 @@ void ImplicitEuler::solve
         v_.segment<3>(6*i + 3) = w;
         b_.segment<3>(6*i) = Famb.segment<3>(6*i) + p.F[i] + invDt*p.m[i]*u;
         b_.segment<3>(6*i + 3) = Famb.segment<3>(6*i + 3) + p.T[i] + invDt*p.I[i]*w;
+        d_.segment<3>(6*i) = dt*p.dudt[i];
+        d_.segment<3>(6*i + 3) = dt*p.domegadt[i];
     }
 
     // The springs' load by the ambient motion and the dashpot's of V'^n
     resistance_.contactRightHandSide(v_, ambient, dt, b_);
 
-    // Warm start: V'^n, moved along the last step's rate of change carried
-    // over this step, d = dt (du/dt, domega/dt), as far as it lowers the
-    // error (ConjugateGradient.H)
-    d_.resize(6*N);
-    #pragma omp parallel for schedule(static) if(parallel)
-    for (std::size_t i = 0; i < N; ++i)
-    {
-        d_.segment<3>(6*i) = dt*p.dudt[i];
-        d_.segment<3>(6*i + 3) = dt*p.domegadt[i];
-    }
-
+    // Warm start: V'^n moved along d as far as it lowers the error
+    // (ConjugateGradient.H)
     statistics_ = solver_.solve(resistance_, b_, v_, &d_);
     iterations_ += statistics_.iterations;
 
