@@ -52,16 +52,28 @@ frictionless()
     done
 }
 
-# Paper Table 1 FR: N = 1000, mu_C = 1, delta_lub = 0.05
+# Paper Table 1 FR: N = 1000, mu_C = 1, delta_lub = 0.05. At phi = 0.54 the
+# contacts of k^ = 4e5 reach overlaps of 0.09-0.10 a in steady shear (stress
+# sets them, not the step: safety 0.4 and 0.2 gave 0.086 and 0.091), so the
+# stopping limit maxOverlap is raised there from 0.1 to 0.15 (a limit on a
+# runaway, not a model parameter; docs/validation.md). 10 strain units per
+# run, more where 10 left the error bar untrusted (fewer than 8 blocks of two
+# correlation strains): 30 at phi = 0.40 (a slow drift, correlation strain
+# 2.4), 20 per seed at 0.54 (2.2)
 frictional()
 {
     local phis="0.40 0.45 0.48 0.50 0.52 0.54" end=10 dense="0.52 0.54"
     if [ $mode = quick ]; then phis="0.45"; end=0.2; dense=""; fi
-    local phi seed
+    local phi seed e
     for phi in $phis; do
+        e=$end
+        if [ $mode = full ]; then
+            case $phi in 0.40) e=30 ;; 0.54) e=20 ;; esac
+        fi
         for seed in 1 $(echo " $dense " | grep -q " $phi " && echo 2); do
             point frictional "phi$phi-seed$seed" uniformShear/frictional \
-                $end 0.01 population/volumeFraction=$phi population/seed=$seed || failed=1
+                $e 0.01 population/volumeFraction=$phi population/seed=$seed \
+                $([ $phi = 0.54 ] && echo integration/maxOverlap=0.15) || failed=1
         done
     done
 }

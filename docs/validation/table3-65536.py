@@ -12,8 +12,9 @@ the CPU seconds per strain (from the progress lines, which carry the
 process's CPU seconds: the difference between the first and the last line
 of each chunk over its strain, summed over the chunks, so the set-up and
 any strain redone after a stop are not counted twice); the peak resident
-memory (the largest the progress lines or the end-of-run line give, from
-getrusage as /usr/bin/time -v).
+memory of the latest chunk (the largest its progress lines or end-of-run
+line give, from getrusage as /usr/bin/time -v: the current code's, as
+chunks may span versions).
 Writes docs/validation/table3-65536.csv and .png and the table between
 <!-- table:table3-65536 --> in docs/validation.md.
 """
@@ -89,8 +90,8 @@ def analyse(name):
            "threads": parts[-1]["threads"],
            "cpu_s_per_strain": dC/dS if dS > 0 else float("nan"),
            "wall_s": wallSeconds(case),
-           "peak_rss_MB": max((p["rss"] for p in parts if not math.isnan(p["rss"])),
-                              default=float("nan"))}
+           "peak_rss_MB": next((p["rss"] for p in reversed(parts) if not math.isnan(p["rss"])),
+                               float("nan"))}
     for q in ("N1", "N2"):
         row[q] = s.get(q, {}).get("mean", float("nan"))
         row[q + "_error"] = s.get(q, {}).get("se", float("nan"))
@@ -102,7 +103,7 @@ def analyse(name):
 
 def markdown(rows):
     head = ("| case | strain run | eta_r | ± | discarded | correlation strain | trusted | N1 | N2 "
-            "| steps per strain | threads | CPU s per strain | peak RSS MB |\n"
+            "| steps per strain | threads | CPU s per strain | peak RSS MB (last chunk) |\n"
             "|---|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|\n")
     fmt = ("| {case} | {strain:.2f} | {etaR:.3g} | {etaR_error:.2g} | {discarded_strain:.2f} "
            "| {correlation_strain:.2g} | {trusted} | {N1:.3g} | {N2:.3g} | {steps_per_strain:.0f} "

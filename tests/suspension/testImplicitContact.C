@@ -977,6 +977,55 @@ TEST(ImplicitContact, RestartIsBitwise)
 }
 
 
+TEST(ImplicitContact, RestoreFromACheckpointIsARestart)
+{
+    // A checkpoint taken at strain 0.1 by a run that then goes on (as a run
+    // that fails does, the cloud restoring its last good state): restored,
+    // the run continues bitwise as the one that restarted itself at 0.1
+    // (start(t, true), as after a write), for both implicit integrators
+    // (velocityVerlet restores through the same start(t, true) as its
+    // restarts, tests/suspensionFoam restart)
+    for (const Integrator integrator :
+        {Integrator::implicitEuler, Integrator::overdamped})
+    {
+        const Suspension s(integrator);
+        Simulation a = s.sheared();
+        Simulation b = s.sheared();
+        ASSERT_GT(a.pairs().nContacts(), 0u);
+        Simulation::Checkpoint c;
+        a.checkpoint(c);
+        EXPECT_TRUE(c.pairs.slotT.empty());
+        const std::uint64_t steps = a.steps();
+
+        a.advance(0.03);
+        ASSERT_NE(a.particles().x, c.particles.x);
+        a.restore(c);
+        EXPECT_EQ(a.time(), b.time());
+        EXPECT_EQ(a.steps(), steps);
+        a.advance(0.05);
+
+        b.start(b.time(), true);
+        b.advance(0.05);
+
+        const Particles& p = a.particles();
+        const Particles& q = b.particles();
+        ASSERT_EQ(p.size(), q.size());
+        EXPECT_EQ(a.time(), b.time());
+        EXPECT_EQ(a.steps(), b.steps());
+        EXPECT_EQ(a.pairs().nContacts(), b.pairs().nContacts());
+        for (std::size_t i = 0; i < p.size(); ++i)
+        {
+            ASSERT_EQ(p.id[i], q.id[i]);
+            EXPECT_EQ(p.x[i], q.x[i]);
+            EXPECT_EQ(p.u[i], q.u[i]);
+            EXPECT_EQ(p.omega[i], q.omega[i]);
+            EXPECT_EQ(p.F[i], q.F[i]);
+        }
+        EXPECT_EQ(a.rheology().etaR, b.rheology().etaR);
+    }
+}
+
+
 TEST(ImplicitContact, WarmStartCarriesTheLastRateOfChange)
 {
     // Each step stores (u^(n+1) - u^n)/dt and that of omega; the next

@@ -3,7 +3,7 @@
 # (N = 1000 bidisperse 1:1.4, equal volumes, phi = 0.5, mu = 1, lubrication to a gap 0.5,
 # epsilon = 1e-3, k_hat = 4e5, kt/kn = 2/7, no rolling), both from the same packing.
 #
-#   run.sh [-r REPS] [-s START] [-e END] [-o OUTDIR]
+#   run.sh [-r REPS] [-s START] [-e END] [-b BASE] [-o OUTDIR]
 #
 # Environment:
 #   LFDEM            LF_DEM binary (built by build.sh)           [required]
@@ -14,19 +14,27 @@
 # (CPU(0..END) - CPU(0..START))/(END - START): set-up and the first START strain cancel
 # (both codes are deterministic on one thread). Every run is one process on one thread,
 # measured by /usr/bin/time -v; one run at a time.
+# -b BASE (a whole number of strain units, default 0): every code starts from the state at
+# strain BASE instead of the packing, so the window BASE+START..BASE+END is at steady state.
+# That state is ours, sheared once from the packing with implicitEuler to BASE (out of the
+# timing); our runs restart from its full state (velocities, contact history), LF_DEM from its
+# positions (foam2lfdem.py --time BASE; its springs start at zero); at a whole strain the
+# Lees-Edwards offset is a whole box length, that is none.
 # Output: OUTDIR/runs.csv (one row per timed run), OUTDIR/results.csv and
 # OUTDIR/results.md (per repetition and medians, by summarise.py), run folders under OUTDIR/runs.
 set -eo pipefail
 
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../../.." && pwd)
-reps=5; start=0.05; end=0.2; out=$root/run/performance/lfdem
-while getopts r:s:e:o: opt; do
+reps=5; start=0.05; end=0.2; baseStrain=0; out=$root/run/performance/lfdem
+while getopts r:s:e:b:o: opt; do
     case $opt in
-        r) reps=$OPTARG ;; s) start=$OPTARG ;; e) end=$OPTARG ;; o) out=$OPTARG ;;
-        *) sed -n 2,25p "$0"; exit 1 ;;
+        r) reps=$OPTARG ;; s) start=$OPTARG ;; e) end=$OPTARG ;; b) baseStrain=$OPTARG ;;
+        o) out=$OPTARG ;;
+        *) sed -n 2,31p "$0"; exit 1 ;;
     esac
 done
+[[ $baseStrain =~ ^[0-9]+$ ]] || { echo "-b BASE must be a whole number of strain units" >&2; exit 1; }
 LFDEM=${LFDEM:?set LFDEM to the LF_DEM binary built by build.sh}
 WSF_PROJECT_DIR=$root
 params=$here/lfdem_FR.txt
@@ -59,6 +67,23 @@ if [ ! -f "$base/setUpDone" ]; then
     touch "$base/setUpDone"
 fi
 
+# --- the start state: the packing, or (-b) ours sheared to strain BASE ---------------
+# start: the case every run starts from; startTime: its time directory
+start_case=$base startTime=0
+if [ "$baseStrain" -gt 0 ]; then
+    start_case=$out/steady$baseStrain startTime=$baseStrain
+    if [ ! -f "$start_case/setUpDone" ]; then
+        rm -rf "$start_case"; mkdir -p "$start_case"
+        cp -r "$base/constant" "$base/system" "$base/0" "$start_case"
+        setEntry "$start_case/constant/suspensionProperties" integration/integrator implicitEuler
+        setEntry "$start_case/system/controlDict" endTime "$startTime"
+        (cd "$start_case" && OMP_NUM_THREADS=1 wavyShearFoam > log.wavyShearFoam 2>&1)
+        [ -d "$start_case/$startTime/lagrangian" ] || { echo "no state at $start_case/$startTime" >&2; exit 1; }
+        python3 "$here/foam2lfdem.py" "$start_case" "$start_case/lfdem_conf.dat" --time "$startTime"
+        touch "$start_case/setUpDone"
+    fi
+fi
+
 csv=$out/runs.csv
 [ -f "$csv" ] || echo "rep,code,strain_end,user_s,sys_s,wall_s,maxrss_kB,load1,steps_total,steps_window,window_start,mean_cg_window,dir" > "$csv"
 
@@ -69,17 +94,17 @@ timeRun()
     (cd "$dir" && /usr/bin/time -v -o time.txt "$@" > log 2>&1)
 }
 
-# row <rep> <code> <strainEnd> <dir>: one CSV row from time.txt and the code's output
+# row <rep> <code> <strainEnd> <dir> [<startTime>]: one CSV row from time.txt and the code's output
 row()
 {
-    python3 "$here/summarise.py" --row "$1" "$2" "$3" "$4" "$start" >> "$csv"
+    python3 "$here/summarise.py" --row "$1" "$2" "$3" "$4" "$start" "${5:-0}" >> "$csv"
 }
 
 runLfdem()   # <rep> <strainEnd>
 {
     local dir=$out/runs/r$1_lfdem_$2
     rm -rf "$dir"; mkdir -p "$dir"
-    cp "$base/lfdem_conf.dat" "$dir/conf.dat"
+    cp "$start_case/lfdem_conf.dat" "$dir/conf.dat"
     { cat "$params"; echo "time_end = $2h;"; } > "$dir/params.txt"
     cat /proc/loadavg > "$dir/loadavg"
     OMP_THREAD_LIMIT=1 OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 \
@@ -91,12 +116,12 @@ runOurs()    # <rep> <integrator> <strainEnd>
 {
     local dir=$out/runs/r$1_$2_$3
     rm -rf "$dir"; mkdir -p "$dir"
-    cp -r "$base/constant" "$base/system" "$base/0" "$dir"
+    cp -r "$start_case/constant" "$start_case/system" "$start_case/$startTime" "$dir"
     setEntry "$dir/constant/suspensionProperties" integration/integrator "$2"
-    setEntry "$dir/system/controlDict" endTime "$3"
+    setEntry "$dir/system/controlDict" endTime "$(awk -v a="$startTime" -v b="$3" 'BEGIN { print a + b }')"
     cat /proc/loadavg > "$dir/loadavg"
     OMP_NUM_THREADS=1 timeRun "$dir" wavyShearFoam
-    row "$1" "$2" "$3" "$dir"
+    row "$1" "$2" "$3" "$dir" "$startTime"
 }
 
 for rep in $(seq 1 "$reps"); do

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Rows and summary of the paired LF_DEM / wavyShearFoam timing (run.sh). Stdlib only.
 
-  summarise.py --row REP CODE STRAIN_END RUN_DIR WINDOW_START
+  summarise.py --row REP CODE STRAIN_END RUN_DIR WINDOW_START [STRAIN0]
       prints one CSV row of runs.csv for a finished run:
       rep,code,strain_end,user_s,sys_s,wall_s,maxrss_kB,load1,steps_total,
       steps_window,window_start,mean_cg_window,dir
@@ -11,7 +11,8 @@
        steps column of rheology.dat. steps_window and mean_cg_window count
        the rows with strain > WINDOW_START. mean_cg_window: mean of the
        cgIterations column, the iterations of the last CG solve of each
-       0.01 strain row.)
+       0.01 strain row. STRAIN0, default 0: the strain our run restarted
+       from (run.sh -b); STRAIN_END and WINDOW_START count from it.)
 
   summarise.py --summary RUNS_CSV START END RESULTS_CSV
       per repetition and code: CPU (user+sys) and wall per strain as
@@ -22,6 +23,7 @@
 import csv
 import glob
 import os
+import re
 import statistics
 import sys
 
@@ -67,7 +69,7 @@ def lfdem_steps(run_dir, start):
     return rows[-1][s], total, window, ""
 
 
-def ours_steps(run_dir, start):
+def ours_steps(run_dir, start, strain0):
     files = glob.glob(os.path.join(run_dir, "postProcessing", "rheology", "*", "rheology.dat"))
     if len(files) != 1:
         raise SystemExit("%s: expected one rheology.dat" % run_dir)
@@ -80,6 +82,15 @@ def ours_steps(run_dir, start):
                 rows.append([float(v) for v in line.split()])
     c = {n: i for i, n in enumerate(names)}
     s, st = c["strain"], c["steps"]
+    # A restart: strains and steps count from the state it started from
+    st0 = 0
+    if strain0:
+        state = os.path.join(run_dir, "%g" % strain0, "uniform", "suspensionState")
+        with open(state) as f:
+            st0 = int(re.search(r"^steps\s+(\d+);", f.read(), re.M).group(1))
+    for r in rows:
+        r[s] -= strain0
+        r[st] -= st0
     at_start = [r[st] for r in rows if abs(r[s] - start) < 1e-9]
     window = rows[-1][st] - at_start[0] if at_start and rows[-1][s] > start + 1e-9 else ""
     cg = ""
@@ -90,7 +101,8 @@ def ours_steps(run_dir, start):
 
 
 def row(args):
-    rep, code, strain_end, run_dir, start = args
+    rep, code, strain_end, run_dir, start = args[:5]
+    strain0 = float(args[5]) if len(args) > 5 else 0.0
     start = float(start)
     user, sys_, wall, rss, status = time_v(os.path.join(run_dir, "time.txt"))
     if status != 0:
@@ -98,7 +110,7 @@ def row(args):
     if code == "lfdem":
         reached, total, window, cg = lfdem_steps(run_dir, start)
     else:
-        reached, total, window, cg = ours_steps(run_dir, start)
+        reached, total, window, cg = ours_steps(run_dir, start, strain0)
     if abs(reached - float(strain_end)) > 1e-6:
         raise SystemExit("%s: reached strain %g, not %s" % (run_dir, reached, strain_end))
     with open(os.path.join(run_dir, "loadavg")) as f:
@@ -194,7 +206,7 @@ def summary(args):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) > 1 and sys.argv[1] == "--row" and len(sys.argv) == 7:
+    if len(sys.argv) > 1 and sys.argv[1] == "--row" and len(sys.argv) in (7, 8):
         row(sys.argv[2:])
     elif len(sys.argv) > 1 and sys.argv[1] == "--summary" and len(sys.argv) == 6:
         summary(sys.argv[2:])

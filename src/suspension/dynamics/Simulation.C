@@ -198,6 +198,30 @@ void Simulation::start(double t, bool forcesGiven)
 }
 
 
+void Simulation::checkpoint(Checkpoint& c) const
+{
+    c.particles = particles_;
+    c.pairs.offset = pairs_.offset;
+    c.pairs.j = pairs_.j;
+    c.pairs.contactOf = pairs_.contactOf;
+    c.pairs.contacts = pairs_.contacts;
+    c.time = time_;
+    c.steps = steps_;
+}
+
+
+void Simulation::restore(const Checkpoint& c)
+{
+    particles_ = c.particles;
+    pairs_.offset = c.pairs.offset;
+    pairs_.j = c.pairs.j;
+    pairs_.contactOf = c.pairs.contactOf;
+    pairs_.contacts = c.pairs.contacts;
+    steps_ = c.steps;
+    start(c.time, true);
+}
+
+
 void Simulation::step(double dt)
 {
     // Path of each particle relative to the flow, for the list's skin

@@ -218,8 +218,10 @@ void Foam::suspensionCloud::writeState() const
 
 void Foam::suspensionCloud::failed(const suspension::SimulationError& err)
 {
-    // The last good state is the one written (writeObject)
-    sim_.emplace(*lastGood_);
+    // The last good state is the one written (writeObject), continued
+    // from as a restart from it would be
+    sim_->restore(lastGood_);
+    SIndex_ = -1;
     runTime_.setTime(lastGoodTime_, lastGoodIndex_);
     runTime_.writeNow();
 
@@ -349,9 +351,12 @@ void Foam::suspensionCloud::reportProgress()
     const scalar done = runTime_.value() - start_.time;
     const scalar toGo = runTime_.endTime().value() - runTime_.value();
 
+    // Whole steps per second, two decimals below 10 (large N: < 1 step/s)
+    const scalar rate = (sim.steps() - reportedSteps_)/sinceReport;
     Info<< "strain " << sim.time()
         << "  etaR " << etaR << " (mean " << etaRSum_/etaRSamples_ << ")  "
-        << label((sim.steps() - reportedSteps_)/sinceReport) << " steps/s";
+        << (rate < 10 ? std::round(100*rate)/100 : std::round(rate))
+        << " steps/s";
     if (const suspension::ImplicitEuler* implicit = sim.implicit())
     {
         Info<< "  CG " << label(implicit->statistics().iterations)
@@ -471,7 +476,7 @@ Foam::suspensionCloud::suspensionCloud
     {
         writeState();
     }
-    lastGood_.emplace(*sim_);
+    sim_->checkpoint(lastGood_);
 }
 
 
@@ -545,8 +550,7 @@ void Foam::suspensionCloud::evolve()
     }
     meanDeltaT_ = runTime_.deltaTValue()/(sim_->steps() - before);
 
-    lastGood_.reset();
-    lastGood_.emplace(*sim_);
+    sim_->checkpoint(lastGood_);
     lastGoodTime_ = runTime_.value();
     lastGoodIndex_ = runTime_.timeIndex();
 
