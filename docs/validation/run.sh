@@ -53,13 +53,15 @@ frictionless()
 }
 
 # Paper Table 1 FR: N = 1000, mu_C = 1, delta_lub = 0.05. At phi = 0.54 the
-# contacts of k^ = 4e5 reach overlaps of 0.09-0.10 a in steady shear (stress
-# sets them, not the step: safety 0.4 and 0.2 gave 0.086 and 0.091), so the
-# stopping limit maxOverlap is raised there from 0.1 to 0.15 (a limit on a
-# runaway, not a model parameter; docs/validation.md). 10 strain units per
-# run, more where 10 left the error bar untrusted (fewer than 8 blocks of two
-# correlation strains): 30 at phi = 0.40 (a slow drift, correlation strain
-# 2.4), 20 per seed at 0.54 (2.2)
+# contacts of k^ = 4e5 reach overlaps of 0.09-0.11 a in steady shear (the
+# stress sets them, not the step: 0.086 and 0.091 for two seeds at safety
+# 0.4, 0.1 at the default 0.2), so the stopping limit maxOverlap is raised
+# there from 0.1 to 0.15 (a limit on a runaway, not a model parameter;
+# docs/validation.md, "phi = 0.54 and the overlap limit"). A case set up
+# before keeps its entries (runCase sets them once): set it in the case's
+# constant/suspensionProperties. 10 strain units per run, more where 10 left
+# the error bar untrusted (correlation strains 2.4 and 2.2 over 10): 30 at
+# phi = 0.40, 20 per seed at 0.54 (then 1.2 and 0.93, trusted)
 frictional()
 {
     local phis="0.40 0.45 0.48 0.50 0.52 0.54" end=10 dense="0.52 0.54"

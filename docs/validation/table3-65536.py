@@ -90,8 +90,7 @@ def analyse(name):
            "threads": parts[-1]["threads"],
            "cpu_s_per_strain": dC/dS if dS > 0 else float("nan"),
            "wall_s": wallSeconds(case),
-           "peak_rss_MB": next((p["rss"] for p in reversed(parts) if not math.isnan(p["rss"])),
-                               float("nan"))}
+           "peak_rss_MB": parts[-1]["rss"]}
     for q in ("N1", "N2"):
         row[q] = s.get(q, {}).get("mean", float("nan"))
         row[q + "_error"] = s.get(q, {}).get("se", float("nan"))

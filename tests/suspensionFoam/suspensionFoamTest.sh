@@ -51,7 +51,10 @@
 #   dimensionalInput
 #               tiny/ written in SI units (units dimensional) gives the same
 #               reduced parameters and the same first rheology.dat row
-#   failure     a blown-up run writes its last good state and exits non-zero
+#   failure     a blown-up run writes its last good state (the state the
+#               run writes when it stops at that time, particle by
+#               particle) and exits non-zero, as does an implicit run whose
+#               velocity solve fails; the state continues
 #   criticalLoadRun, criticalLoadDimensional
 #               contact type criticalLoadContact: read (in reduced and in SI
 #               units), reported and run
@@ -485,7 +488,7 @@ failure)
     setEntry ref system/controlDict endTime "$last"
     setEntry ref system/controlDict writeInterval 1
     runCase ref "to the last good time $last"
-    for field in x U omega dUdt dOmegadt F T; do
+    for field in x U omega F T S; do
         [ -s "$work/ref/$last/lagrangian/suspension/$field" ] \
             || fail "no $field at $last in the uninterrupted run"
         byId "$work/c/$last" $field > "$work/failed.$field"
@@ -495,12 +498,27 @@ failure)
     done
     for entry in time steps nContacts offset; do
         foamDictionary -entry $entry -value "$work/c/$last/uniform/suspensionState" \
-            > "$work/failed.$entry"
+            > "$work/failed.$entry" || fail "no $entry in the last good state"
         foamDictionary -entry $entry -value "$work/ref/$last/uniform/suspensionState" \
-            > "$work/ref.$entry"
+            > "$work/ref.$entry" || fail "no $entry in the run's own state"
         sameNumbers "$work/failed.$entry" "$work/ref.$entry" 1e-9 \
             || fail "the last good state's $entry differs from the run's own at $last"
     done
+
+    # An implicit run whose velocity solve fails (one CG iteration) also
+    # writes its last good state, the state it started from
+    newCase d
+    setEntry d $properties integration/integrator implicitEuler
+    foamDictionary -entry integration/solver -add "{ maxIterations 1; }" \
+        "$work/d/$properties" > /dev/null 2>&1 || fail "cannot add integration/solver"
+    if (cd "$work/d" && wavyShearFoam > log.wavyShearFoam 2>&1); then
+        fail "the implicit run with one CG iteration did not stop"
+    fi
+    grep -q "did not converge" "$work/d/log.wavyShearFoam" || fail "no CG diagnostic"
+    grep -q "last good state (time 0, " "$work/d/log.wavyShearFoam" \
+        || fail "the unconverged run wrote no last good state at time 0"
+    [ "$(entries "$work/d/0/lagrangian/suspension/x")" = "$N" ] \
+        || fail "no last good cloud at time 0 of the unconverged run"
 
     # The last good state continues with stiffer contacts
     mv "$log" "$log.failed"

@@ -31,7 +31,7 @@ while getopts r:s:e:b:o: opt; do
     case $opt in
         r) reps=$OPTARG ;; s) start=$OPTARG ;; e) end=$OPTARG ;; b) baseStrain=$OPTARG ;;
         o) out=$OPTARG ;;
-        *) sed -n 2,31p "$0"; exit 1 ;;
+        *) sed -n 2,24p "$0"; exit 1 ;;
     esac
 done
 [[ $baseStrain =~ ^[0-9]+$ ]] || { echo "-b BASE must be a whole number of strain units" >&2; exit 1; }
@@ -68,7 +68,7 @@ if [ ! -f "$base/setUpDone" ]; then
 fi
 
 # --- the start state: the packing, or (-b) ours sheared to strain BASE ---------------
-# start: the case every run starts from; startTime: its time directory
+# start_case: the case every run starts from; startTime: its time directory
 start_case=$base startTime=0
 if [ "$baseStrain" -gt 0 ]; then
     start_case=$out/steady$baseStrain startTime=$baseStrain
@@ -77,7 +77,8 @@ if [ "$baseStrain" -gt 0 ]; then
         cp -r "$base/constant" "$base/system" "$base/0" "$start_case"
         setEntry "$start_case/constant/suspensionProperties" integration/integrator implicitEuler
         setEntry "$start_case/system/controlDict" endTime "$startTime"
-        (cd "$start_case" && OMP_NUM_THREADS=1 wavyShearFoam > log.wavyShearFoam 2>&1)
+        (cd "$start_case" && OMP_NUM_THREADS=1 wavyShearFoam > log.wavyShearFoam 2>&1) \
+            || { echo "shearing to strain $startTime failed, see $start_case/log.wavyShearFoam" >&2; exit 1; }
         [ -d "$start_case/$startTime/lagrangian" ] || { echo "no state at $start_case/$startTime" >&2; exit 1; }
         python3 "$here/foam2lfdem.py" "$start_case" "$start_case/lfdem_conf.dat" --time "$startTime"
         touch "$start_case/setUpDone"
@@ -136,5 +137,11 @@ for rep in $(seq 1 "$reps"); do
     tail -6 "$csv" | cut -d, -f1-8
 done
 
-python3 "$here/summarise.py" --summary "$csv" "$start" "$end" "$out/results.csv" > "$out/results.md"
+{
+    if [ "$startTime" != 0 ]; then
+        echo "Every run from the state at strain $startTime: the strains below count from it."
+        echo
+    fi
+    python3 "$here/summarise.py" --summary "$csv" "$start" "$end" "$out/results.csv"
+} > "$out/results.md"
 cat "$out/results.md"

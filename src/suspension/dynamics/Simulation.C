@@ -194,7 +194,9 @@ void Simulation::start(double t, bool forcesGiven)
             particles_, box_, flow_, pairs_, search_.far(), ForceField::Output()
         );
     }
-    check();
+    // No solve here: the statistics may be those of a step a restore()
+    // discarded
+    check(false);
 }
 
 
@@ -266,7 +268,7 @@ void Simulation::step(double dt)
 
     time_ += dt;
     ++steps_;
-    check();
+    check(true);
 }
 
 
@@ -395,9 +397,9 @@ double Simulation::velocityFluctuation() const
 }
 
 
-void Simulation::check() const
+void Simulation::check(bool solved) const
 {
-    if (implicit_ && !implicit_->statistics().converged)
+    if (solved && implicit_ && !implicit_->statistics().converged)
     {
         const ConjugateGradient::Result& cg = implicit_->statistics();
         std::ostringstream msg;

@@ -220,7 +220,18 @@ void Foam::suspensionCloud::failed(const suspension::SimulationError& err)
 {
     // The last good state is the one written (writeObject), continued
     // from as a restart from it would be
-    sim_->restore(lastGood_);
+    try
+    {
+        sim_->restore(lastGood_);
+    }
+    catch (const std::exception& restoreErr)
+    {
+        FatalErrorInFunction
+            << err.what() << nl
+            << "    The last good state (time " << lastGoodTime_
+            << ") could not be restored, nothing was written: "
+            << restoreErr.what() << nl << exit(FatalError);
+    }
     SIndex_ = -1;
     runTime_.setTime(lastGoodTime_, lastGoodIndex_);
     runTime_.writeNow();
