@@ -158,12 +158,34 @@ runCase()
         || fail "wavyShearFoam ${2:-$1}"
 }
 
+# The entries of an ascii IOField $1, one per line, parentheses removed
+# (a uniform list N{value} repeated N times)
+listLines()
+{
+    awk '/^[0-9]+\{/ { n = $0; sub(/\{.*/, "", n); v = $0; sub(/^[0-9]+\{/, "", v)
+                       sub(/\}.*/, "", v); for (k = 0; k < n; ++k) print v; exit }
+         /^\($/ { on = 1; next } /^\)$/ { on = 0 } on' "$1" | tr -d '()'
+}
+
 # The entries of cloud field $2 in time directory $1, one per line after
 # the particle's origId, sorted by it
 byId()
 {
-    local cloud=$1/lagrangian/suspension body='/^\($/ { on = 1; next } /^\)$/ { on = 0 } on'
-    paste <(awk "$body" "$cloud/origId") <(awk "$body" "$cloud/$2") | sort -n
+    local cloud=$1/lagrangian/suspension
+    paste <(listLines "$cloud/origId") <(listLines "$cloud/$2") | sort -n
+}
+
+# The contact history in time directory $1, one contact per line: the two
+# origIds, smaller first, and the stretches xiT, xiR oriented that way
+# (negated for a pair stored the other way round), sorted by the ids
+byContact()
+{
+    local c=$1/lagrangian/suspensionContacts
+    paste <(listLines "$c/idI") <(listLines "$c/idJ") <(listLines "$c/xiT") \
+        <(listLines "$c/xiR") \
+  | awk '{ s = $1 < $2 ? 1 : -1; printf "%s %s", (s > 0 ? $1 : $2), (s > 0 ? $2 : $1)
+           for (k = 3; k <= 8; ++k) printf " %.17g", s*$k; printf "\n" }' \
+  | sort -k1,1n -k2,2n
 }
 
 # The data rows of a .dat file
@@ -496,6 +518,11 @@ failure)
         sameNumbers "$work/failed.$field" "$work/ref.$field" 1e-9 \
             || fail "the last good $field differs from the run's own at $last"
     done
+    byContact "$work/c/$last" > "$work/failed.contacts"
+    byContact "$work/ref/$last" > "$work/ref.contacts"
+    [ -s "$work/ref.contacts" ] || fail "no contacts at $last in the uninterrupted run"
+    sameNumbers "$work/failed.contacts" "$work/ref.contacts" 1e-9 \
+        || fail "the last good contact history differs from the run's own at $last"
     for entry in time steps nContacts offset; do
         foamDictionary -entry $entry -value "$work/c/$last/uniform/suspensionState" \
             > "$work/failed.$entry" || fail "no $entry in the last good state"
