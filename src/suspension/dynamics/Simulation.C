@@ -200,13 +200,24 @@ void Simulation::start(double t, bool forcesGiven)
 }
 
 
+namespace
+{
+    //- The slots of a near list and their contact history, what a rebuild
+    //  carries over (NeighbourSearch::rebuild); not the transposed index
+    void copySlots(const PairList& from, PairList& to)
+    {
+        to.offset = from.offset;
+        to.j = from.j;
+        to.contactOf = from.contactOf;
+        to.contacts = from.contacts;
+    }
+}
+
+
 void Simulation::checkpoint(Checkpoint& c) const
 {
     c.particles = particles_;
-    c.pairs.offset = pairs_.offset;
-    c.pairs.j = pairs_.j;
-    c.pairs.contactOf = pairs_.contactOf;
-    c.pairs.contacts = pairs_.contacts;
+    copySlots(pairs_, c.pairs);
     c.time = time_;
     c.steps = steps_;
 }
@@ -215,10 +226,7 @@ void Simulation::checkpoint(Checkpoint& c) const
 void Simulation::restore(const Checkpoint& c)
 {
     particles_ = c.particles;
-    pairs_.offset = c.pairs.offset;
-    pairs_.j = c.pairs.j;
-    pairs_.contactOf = c.pairs.contactOf;
-    pairs_.contacts = c.pairs.contacts;
+    copySlots(c.pairs, pairs_);
     steps_ = c.steps;
     start(c.time, true);
 }

@@ -232,7 +232,6 @@ void Foam::suspensionCloud::failed(const suspension::SimulationError& err)
             << ") could not be restored, nothing was written: "
             << restoreErr.what() << nl << exit(FatalError);
     }
-    SIndex_ = -1;
     runTime_.setTime(lastGoodTime_, lastGoodIndex_);
     runTime_.writeNow();
 
