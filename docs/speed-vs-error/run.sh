@@ -49,7 +49,7 @@ template()
 timeStep()
 {
     # Sampling intervals above the largest step of each case (the sub-steps
-    # land on them): frictionless dt = 0.021 at safety 0.9, frictional 4.6e-4
+    # land on them): frictionless dt = 0.021 at safety 0.9, frictional 1.2e-3
     local window=0.25 sampling_frictionless=0.025 sampling_frictional=0.005
     local implicit="0.01 0.02 0.05 0.1 0.2 0.5 0.9" explicit="0.2 0.1" overdamped="0.2"
     if [ $mode = quick ]; then

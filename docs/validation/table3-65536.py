@@ -8,9 +8,10 @@ the eta_r histories of both; the particle and ambient streamwise velocity
 and the local shear rate across y, averaged over the write times after the
 discarded start-up; the steady eta_r with its error bar (the solver's own
 rheologySummary.dat: MSER-5 start-up, blocks of two correlation strains);
-the CPU seconds per strain (from the progress lines, which carry the
-process's CPU seconds: the difference between the first and the last line
-of each chunk over its strain, summed over the chunks, so the set-up and
+the CPU seconds per strain for each number of threads the chunks ran
+with (from the progress lines, which carry the process's CPU seconds: the
+difference between the first and the last line of each chunk over its
+strain, summed over the chunks of that thread count, so the set-up and
 any strain redone after a stop are not counted twice); the peak resident
 memory of the latest chunk (the largest its progress lines or end-of-run
 line give, from getrusage as /usr/bin/time -v: the current code's, as
@@ -38,8 +39,8 @@ runs = os.path.join(os.environ.get("WSF_VALIDATION_DIR", os.path.join(root, "run
                     "table3-65536")
 CASES = ("NW", "YW")
 COLUMNS = ["case", "strain", "etaR", "etaR_error", "discarded_strain", "correlation_strain",
-           "trusted", "N1", "N1_error", "N2", "N2_error", "steps_per_strain", "threads",
-           "cpu_s_per_strain", "wall_s", "peak_rss_MB"]
+           "trusted", "N1", "N1_error", "N2", "N2_error", "steps_per_strain",
+           "cpu_s_per_strain_1_thread", "cpu_s_per_strain_2_threads", "wall_s", "peak_rss_MB"]
 
 
 def chunks(case):
@@ -77,8 +78,12 @@ def analyse(name):
         return None
     s = readSummaries(case) or {}
     e = s.get("etaR", {})
-    dS = sum(p["strain"][-1] - p["strain"][0] for p in parts if len(p["strain"]) > 1)
-    dC = sum(p["cpu"][-1] - p["cpu"][0] for p in parts if len(p["strain"]) > 1)
+    def cpuPerStrain(threads):
+        done = [p for p in parts if len(p["strain"]) > 1 and p["threads"] == threads]
+        dS = sum(p["strain"][-1] - p["strain"][0] for p in done)
+        dC = sum(p["cpu"][-1] - p["cpu"][0] for p in done)
+        return dC/dS if dS > 0 else float("nan")
+
     history = readRheology(case)
     row = {"case": name,
            "strain": float(history["strain"][-1]) if history is not None else float("nan"),
@@ -87,8 +92,8 @@ def analyse(name):
            "correlation_strain": e.get("corr", float("nan")),
            "trusted": e.get("trusted", "no"),
            "steps_per_strain": parts[-1]["steps"],
-           "threads": parts[-1]["threads"],
-           "cpu_s_per_strain": dC/dS if dS > 0 else float("nan"),
+           "cpu_s_per_strain_1_thread": cpuPerStrain(1),
+           "cpu_s_per_strain_2_threads": cpuPerStrain(2),
            "wall_s": wallSeconds(case),
            "peak_rss_MB": parts[-1]["rss"]}
     for q in ("N1", "N2"):
@@ -102,12 +107,19 @@ def analyse(name):
 
 def markdown(rows):
     head = ("| case | strain run | eta_r | ± | discarded | correlation strain | trusted | N1 | N2 "
-            "| steps per strain | threads | CPU s per strain | peak RSS MB (last chunk) |\n"
+            "| steps per strain | CPU s per strain, 1 thread | CPU s per strain, 2 threads "
+            "| peak RSS MB (last chunk) |\n"
             "|---|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|\n")
     fmt = ("| {case} | {strain:.2f} | {etaR:.3g} | {etaR_error:.2g} | {discarded_strain:.2f} "
            "| {correlation_strain:.2g} | {trusted} | {N1:.3g} | {N2:.3g} | {steps_per_strain:.0f} "
-           "| {threads} | {cpu_s_per_strain:.0f} | {peak_rss_MB:.0f} |\n")
-    return head + "".join(fmt.format(**r) for r in rows)
+           "| {cpu_s_per_strain_1_thread} | {cpu_s_per_strain_2_threads} "
+           "| {peak_rss_MB:.0f} |\n")
+
+    def cells(r):
+        cpu = ("cpu_s_per_strain_1_thread", "cpu_s_per_strain_2_threads")
+        return {k: ("–" if math.isnan(v) else f"{v:.0f}") if k in cpu else v
+                for k, v in r.items()}
+    return head + "".join(fmt.format(**cells(r)) for r in rows)
 
 
 def main():

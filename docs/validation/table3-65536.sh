@@ -12,12 +12,14 @@
 #   NW YW        the cases (default both, NW first)
 #
 # Steps: NW at the default safety 0.2; YW at safety 0.1, as validation.md
-# recommends for a non-uniform flow (its local shear rate reaches 6.6 times
-# the mean). Each case is run by runCase (etc/caseFunctions) under
+# recommends for a non-uniform flow: its local shear rate reaches
+# 1 + 20 (2 pi/Ly) = 2.4 times the mean in this box (Ly = 87.9), so the
+# largest local strain per step, 2.4 x 1.3e-4, is about NW's 2.6e-4.
+# Each case is run by runCase (etc/caseFunctions) under
 # run/validation/table3-65536/<case>: set up once (box, mesh, packing), then
 # restarted from its latest write whenever the script is run again, so the
 # run can be chunked over sessions. A write every 0.05 strain in binary
-# (about 50 MB), the last two kept; the rheology every 0.01 strain, the
+# (about 24 MB), the last two kept; the rheology every 0.01 strain, the
 # profiles (32 bins across y) at every write. Then
 #   docs/validation/table3-65536.py    (figure and table of validation.md)
 #------------------------------------------------------------------------------

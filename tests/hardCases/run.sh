@@ -120,7 +120,8 @@ overlappingStart()
 }
 longRun()
 {
-    # 10^6 steps (dt = 1.03e-4) of the frictional case with 100 particles
+    # 103 strain units of the frictional case with 100 particles: 4e5 steps
+    # at the default step (2.56e-4)
     local name=longRun dir=$runRoot/longRun end
     end=$(strain 103)
     runCase "$dir" "$tutorials/uniformShear/frictional" "$end" 0.1 \
