@@ -43,6 +43,9 @@ export OMP_NUM_THREADS=$threads
 setup="setEntry system/controlDict writeInterval 5 \
     && setEntry system/controlDict writeFormat binary \
     && setEntry system/controlDict functions/profiles/nBins 32"
+# In braces, so that bash reads the loop whole before it runs it: editing
+# this file during a run of hours cannot change what the run reads next
+{
 status=0
 for c in $cases; do
     case $c in
@@ -55,3 +58,4 @@ for c in $cases; do
         integration/safety=$safety || status=1
 done
 exit $status
+}
