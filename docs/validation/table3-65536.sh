@@ -19,7 +19,7 @@
 # run/validation/table3-65536/<case>: set up once (box, mesh, packing), then
 # restarted from its latest write whenever the script is run again, so the
 # run can be chunked over sessions. A write every 0.05 strain in binary
-# (about 24 MB), the last two kept; the rheology every 0.01 strain, the
+# (24-25 MB), the last two kept; the rheology every 0.01 strain, the
 # profiles (32 bins across y) at every write. Then
 #   docs/validation/table3-65536.py    (figure and table of validation.md)
 #------------------------------------------------------------------------------
@@ -32,7 +32,7 @@ end=3 threads=2
 while getopts e:t: opt; do
     case $opt in
         e) end=$OPTARG ;; t) threads=$OPTARG ;;
-        *) sed -n 2,22p "$0"; exit 2 ;;
+        *) sed -n 2,24p "$0"; exit 2 ;;
     esac
 done
 shift $((OPTIND - 1))
