@@ -7,7 +7,8 @@
 # docs/performance.md from it.
 #   docs/performance/engine-v2.sh [repeats] [reference-benchmark]
 # The reference defaults to the engine of commit 743b88a (the last before
-# engine v2), built here into /tmp/wsf-reference (engine only, ~3 min).
+# engine v2), built into /tmp/wsf-engine-743b88a (engine only, ~3 min;
+# benchmarkFunctions).
 # Needs a Release build of this tree (./Allwmake). Two threads are used only
 # by the thread-scaling cases: run it on an otherwise idle machine.
 #------------------------------------------------------------------------------
@@ -16,22 +17,10 @@ here="$(cd "$(dirname "$0")" && pwd)"
 top="$here/../.."
 cd "$top"
 . etc/bashrc
-# Each binary finds its own engine library by its RUNPATH
-unset LD_LIBRARY_PATH
 repeats="${1:-5}"
 new="$FOAM_USER_APPBIN/suspensionBenchmark"
-ref="${2:-}"
-if [ -z "$ref" ]; then
-    refTree=/tmp/wsf-reference
-    if [ ! -x "$refTree/platforms/linux64GccDPInt32Opt/bin/suspensionBenchmark" ]; then
-        rm -rf "$refTree"
-        git worktree add -f --detach "$refTree" 743b88a > /dev/null
-        cmake -S "$refTree" -B "$refTree/build" -DCMAKE_BUILD_TYPE=Release \
-            -DWSF_WITH_OPENFOAM=OFF -DWSF_WITH_TESTS=OFF > /dev/null
-        cmake --build "$refTree/build" --target suspensionBenchmark -j 2 > /dev/null
-    fi
-    ref="$refTree/platforms/linux64GccDPInt32Opt/bin/suspensionBenchmark"
-fi
+. "$here/benchmarkFunctions"
+ref="${2:-$(referenceBenchmark 743b88a)}"
 out="$here/engine-v2.csv"
 
 {
@@ -40,19 +29,7 @@ out="$here/engine-v2.csv"
 } > "$out"
 
 # run <engine name> <binary> <repeat> <threads> <args...>
-run() {
-    local name=$1 bin=$2 r=$3 threads=$4; shift 4
-    local log row
-    log=$(mktemp)
-    row=$(OMP_NUM_THREADS=$threads OMP_WAIT_POLICY=PASSIVE /usr/bin/time -v "$bin" "$@" 2> "$log")
-    awk -F': ' -v name="$name" -v r="$r" -v row="$row" '
-        /User time/ {u = $2} /System time/ {s = $2}
-        /Elapsed \(wall clock\)/ {n = split($2, t, ":"); w = 0; for (k = 1; k <= n; ++k) w = 60*w + t[k]}
-        /Maximum resident set size/ {m = $2/1024}
-        END {printf "%s,%s,%.3f,%.3f,%.1f,%s\n", name, r, u + s, w, m, row}' "$log" \
-        | tee -a "$out"
-    rm -f "$log"
-}
+run() { timedBenchmark "$out" "$@"; }
 
 # paired <threads> <args...>: new and reference in turn
 paired() {

@@ -291,6 +291,69 @@ TEST(Implicit, MatrixFreeProductEqualsDenseAssembly)
 }
 
 
+TEST(Implicit, PreconditionerInvertsTheDiagonalBlocksWithContacts)
+{
+    // Springs and dashpots on every third pair of the list, so that the
+    // diagonal blocks of A hold R, dt K and Gamma; each block is read
+    // from the operator itself, A applied to the unit vectors of one
+    // particle
+    RandomBox s(3);
+    std::vector<LinearisedContact> contacts;
+    for (std::uint32_t i = 0; i < s.p.size(); ++i)
+    {
+        for (std::uint32_t k = s.pairs.offset[i]; k < s.pairs.offset[i + 1]; k += 3)
+        {
+            const std::uint32_t j = s.pairs.j[k];
+            Vec3 r = s.p.x[j] - s.p.x[i];
+            s.box.minimumImage(r);
+            contacts.push_back
+            ({
+                i, j, r.normalized(), s.p.a[i], s.p.a[j], Vec3::Zero(),
+                ContactStiffness{4e3, 0.7, (k % 2) ? 1e3 : 0.0, 3e2}
+            });
+        }
+    }
+    HydrodynamicResistance R(s.models.drag(), s.models.get<Lubrication>());
+    HydrodynamicResistance R0(s.models.drag(), s.models.get<Lubrication>());
+    R.assemble(s.p, s.box, s.ambient, s.pairs, contacts);
+    R0.assemble(s.p, s.box, s.ambient, s.pairs);
+    ASSERT_GT(R.nContacts(), 10u);
+
+    const std::size_t N = s.p.size();
+    std::mt19937 gen(11);
+    std::normal_distribution<double> normal;
+    Eigen::VectorXd x(6*N);
+    for (int k = 0; k < x.size(); ++k) x(k) = normal(gen);
+
+    for (const bool inertia : {false, true})
+    {
+        const double dt = 1e-3;
+        R.setStep(s.p, dt, inertia);
+        R0.setStep(s.p, dt, inertia);
+        Eigen::VectorXd z, z0;
+        R.precondition(x, z);
+        R0.precondition(x, z0);
+        for (std::size_t i = 0; i < N; ++i)
+        {
+            Eigen::Matrix<double, 6, 6> D;
+            for (int c = 0; c < 6; ++c)
+            {
+                Eigen::VectorXd e = Eigen::VectorXd::Zero(6*N), y;
+                e(6*i + c) = 1;
+                R.apply(e, y);
+                D.col(c) = y.segment<6>(6*i);
+            }
+            const Eigen::Matrix<double, 6, 1> xi = x.segment<6>(6*i);
+            EXPECT_LT((D*z.segment<6>(6*i) - xi).norm(), 1e-12*xi.norm())
+                << "particle " << i << ", inertia " << inertia;
+        }
+        // The contacts change the blocks (a preconditioner without them
+        // would pass the check above only where a particle has none)
+        EXPECT_GT((z - z0).norm(), 1e-2*z0.norm());
+    }
+}
+
+
 TEST(Implicit, ResistanceGivesTheForcesAndStressOfTheExplicitPairLoop)
 {
     // -R V' + F_amb and the hydrodynamic stresslets equal Stokes drag plus

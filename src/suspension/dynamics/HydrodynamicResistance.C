@@ -213,7 +213,6 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
 {
     const std::size_t N = p.size();
     const std::size_t nB = reductionBlocks(N);
-    const double eta = drag_.params().eta;
     const double gap = lubrication_ ? lubrication_->gap() : -1;
 
     // Minimum-image r of a slot, and whether it is in lubrication range
@@ -250,7 +249,6 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
     index_.j.resize(nPairs);
     pairs_.resize(nPairs);
     pairRows_.resize(nPairs);
-    diagonalR_.resize(N);
     ambientForces_.resize(6*N);
 
     // Pass 1: Stokes drag, pair coefficients and the rows of i of each
@@ -271,9 +269,6 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
             Vec6 b;
             b << d.F, d.T;
             stokesS[blk] += d.S;
-
-            Block D = Block::Zero();
-            D.diagonal() << Vec3::Constant(6*pi*eta*a), Vec3::Constant(8*pi*eta*a*a*a);
 
             const Vec6 vi = relativeVelocity(p, fi, i);
             std::uint32_t s = index_.offset[i];
@@ -300,8 +295,6 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
                 b.tail<3>() += fE.segment<3>(6);
                 pairRows_[s] << fE.segment<3>(3), fE.segment<3>(9);
 
-                D += selfBlock(g.n, c.XA.ii, c.YA.ii, c.YB.ii, c.YC.ii);
-
                 // Stresslet (9b) of the force on i at the current velocities
                 Vec6 yi, yj;
                 pairProduct(q, vi, relativeVelocity(p, ambient[j], j), yi, yj);
@@ -309,27 +302,23 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
                 ++s;
             }
             ambientForces_.segment<6>(6*i) = b;
-            diagonalR_[i] = D;
         }
     }
     index_.transpose();
 
-    // Pass 2: the rows of j, F^E, T^E and diagonal blocks, in pair order
+    // Pass 2: the rows of j, F^E, T^E, in pair order
     #pragma omp parallel for schedule(static) if(threaded(N))
     for (std::size_t j = 0; j < N; ++j)
     {
         for (std::uint32_t k = index_.offsetT[j]; k < index_.offsetT[j + 1]; ++k)
         {
-            const std::uint32_t s = index_.slotT[k];
-            const Pair& q = pairs_[s];
-            ambientForces_.segment<6>(6*j) += pairRows_[s];
-            diagonalR_[j] += selfBlock(q.n, q.XA.jj, q.YA.jj, q.YB.jj, q.YC.jj);
+            ambientForces_.segment<6>(6*j) += pairRows_[index_.slotT[k]];
         }
     }
 
     // The contacts with a spring in the operator (all, or with the normal
-    // springs explicit those with a sticking tangential or rolling one),
-    // their index and the diagonal blocks of their springs
+    // springs explicit those with a sticking tangential or rolling one)
+    // and their index
     contacts_.clear();
     contactIndex_.offset.assign(N + 1, 0);
     contactIndex_.j.clear();
@@ -358,31 +347,6 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
         contactIndex_.offset[i + 1] += contactIndex_.offset[i];
     }
     contactIndex_.transpose();
-    diagonalK_.resize(N);
-    diagonalGamma_.resize(N);
-    #pragma omp parallel for schedule(static) if(threaded(N))
-    for (std::size_t i = 0; i < N; ++i)
-    {
-        Block K = Block::Zero();
-        Block G = Block::Zero();
-        auto add = [&](const Contact& c, double side, double a)
-        {
-            const ContactStiffness& k = c.k;
-            K += contactSelfBlock(c.n, side, a, c.aij, k.kn, k.kt, k.kr);
-            G.topLeftCorner<3, 3>() += k.gammaN*outer(c.n, c.n);
-        };
-        for (std::uint32_t s = contactIndex_.offset[i]; s < contactIndex_.offset[i + 1]; ++s)
-        {
-            add(contacts_[s], -1, contacts_[s].ai);
-        }
-        for (std::uint32_t t = contactIndex_.offsetT[i]; t < contactIndex_.offsetT[i + 1]; ++t)
-        {
-            const Contact& c = contacts_[contactIndex_.slotT[t]];
-            add(c, 1, c.aj);
-        }
-        diagonalK_[i] = K;
-        diagonalGamma_[i] = G;
-    }
 
     Stresslets S{Mat3::Zero(), Mat3::Zero()};
     for (std::size_t blk = 0; blk < nB; ++blk)
@@ -403,6 +367,8 @@ void HydrodynamicResistance::setStep(const Particles& p, double dt, bool inertia
     rotation_.resize(N);
     inverseA_.resize(N);
 
+    // The diagonal block of A of each particle, from the pairs it is in
+    // (first, then second, in pair order), inverted; not stored
     #pragma omp parallel for schedule(static) if(threaded(N))
     for (std::size_t i = 0; i < N; ++i)
     {
@@ -411,7 +377,41 @@ void HydrodynamicResistance::setStep(const Particles& p, double dt, bool inertia
         const double I = invDt*p.I[i];
         translation_[i] = 6*pi*eta*a + m;
         rotation_[i] = 8*pi*eta*a*a*a + I;
-        Block A = diagonalR_[i] + dt*diagonalK_[i] + diagonalGamma_[i];
+
+        // R: the Stokes drag (A.1) and the self blocks of R_Lub
+        Block R = Block::Zero();
+        R.diagonal() << Vec3::Constant(6*pi*eta*a), Vec3::Constant(8*pi*eta*a*a*a);
+        for (std::uint32_t s = index_.offset[i]; s < index_.offset[i + 1]; ++s)
+        {
+            const Pair& q = pairs_[s];
+            R += selfBlock(q.n, q.XA.ii, q.YA.ii, q.YB.ii, q.YC.ii);
+        }
+        for (std::uint32_t k = index_.offsetT[i]; k < index_.offsetT[i + 1]; ++k)
+        {
+            const Pair& q = pairs_[index_.slotT[k]];
+            R += selfBlock(q.n, q.XA.jj, q.YA.jj, q.YB.jj, q.YC.jj);
+        }
+
+        // K and Gamma: the springs and dashpots of its contacts
+        Block K = Block::Zero();
+        Block G = Block::Zero();
+        auto add = [&](const Contact& c, double side, double radius)
+        {
+            const ContactStiffness& k = c.k;
+            K += contactSelfBlock(c.n, side, radius, c.aij, k.kn, k.kt, k.kr);
+            G.topLeftCorner<3, 3>() += k.gammaN*outer(c.n, c.n);
+        };
+        for (std::uint32_t s = contactIndex_.offset[i]; s < contactIndex_.offset[i + 1]; ++s)
+        {
+            add(contacts_[s], -1, contacts_[s].ai);
+        }
+        for (std::uint32_t t = contactIndex_.offsetT[i]; t < contactIndex_.offsetT[i + 1]; ++t)
+        {
+            const Contact& c = contacts_[contactIndex_.slotT[t]];
+            add(c, 1, c.aj);
+        }
+
+        Block A = R + dt*K + G;
         A.diagonal() += (Vec6() << Vec3::Constant(m), Vec3::Constant(I)).finished();
         inverseA_[i] = A.llt().solve(Block::Identity());
     }
