@@ -38,7 +38,8 @@ done
 
 # Medians over this invocation: whole process and the benchmark's peak
 tail -n +"$rows" "$csv" | awk -F, -v h="$(head -1 "$csv")" '
-    BEGIN { n = split(h, c, ","); for (k = 1; k <= n; ++k) if (c[k] == "peak_rss_MB") col = k }
+    BEGIN { n = split(h, c, ","); for (k = 1; k <= n; ++k) if (c[k] == "peak_rss_MB") col = k
+            if (!col) { print "implicit-memory.sh: no peak_rss_MB column" > "/dev/stderr"; exit 1 } }
     function median(v, k,   i, j, t) {
         for (i = 2; i <= k; i++) for (j = i; j > 1 && v[j-1] > v[j]; j--) {
             t = v[j]; v[j] = v[j-1]; v[j-1] = t }
