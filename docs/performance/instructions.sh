@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 #------------------------------------------------------------------------------
 # Instructions per particle-step of engine v2 and of the reference engine
-# (docs/performance/engine-v2.sh builds it into /tmp/wsf-reference), counted
+# (of commit 743b88a, built as engine-v2.sh builds it, benchmarkFunctions), counted
 # by valgrind's callgrind inside Simulation::step only: a figure that does
 # not depend on the load of the machine. Writes instructions.csv.
 #   docs/performance/instructions.sh [reference-benchmark]
@@ -12,7 +12,8 @@ cd "$here/../.."
 . etc/bashrc
 unset LD_LIBRARY_PATH
 new="$FOAM_USER_APPBIN/suspensionBenchmark"
-ref="${1:-/tmp/wsf-reference/platforms/linux64GccDPInt32Opt/bin/suspensionBenchmark}"
+. "$here/benchmarkFunctions"
+ref="${1:-$(referenceBenchmark 743b88a)}"
 out="$here/instructions.csv"
 steps=10
 echo "engine,case,attractionCutoff,integrator,N,steps_counted,instructions,instructions_per_particle_step" > "$out"
