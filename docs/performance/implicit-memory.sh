@@ -37,13 +37,9 @@ for r in $(seq "$repeats"); do
 done
 
 # Medians over this invocation: whole process and the benchmark's peak
-tail -n +"$rows" "$csv" | awk -F, -v h="$(head -1 "$csv")" '
+tail -n +"$rows" "$csv" | awk -F, -v h="$(head -1 "$csv")" "$awkMedian"'
     BEGIN { n = split(h, c, ","); for (k = 1; k <= n; ++k) if (c[k] == "peak_rss_MB") col = k
             if (!col) { print "implicit-memory.sh: no peak_rss_MB column" > "/dev/stderr"; exit 1 } }
-    function median(v, k,   i, j, t) {
-        for (i = 2; i <= k; i++) for (j = i; j > 1 && v[j-1] > v[j]; j--) {
-            t = v[j]; v[j] = v[j-1]; v[j-1] = t }
-        return k % 2 ? v[(k+1)/2] : (v[k/2] + v[k/2+1])/2 }
     { m = ++count[$1]; w[$1, m] = $5; e[$1, m] = $col }
     END { for (name in count) {
               for (k = 1; k <= count[name]; ++k) { a[k] = w[name, k]; b[k] = e[name, k] }

@@ -15,6 +15,7 @@ here="$(cd "$(dirname "$0")" && pwd)"
 top="$(cd "$here/../.." && pwd)"
 . "$top/etc/bashrc" > /dev/null 2>&1
 . "$top/etc/caseFunctions"
+. "$here/benchmarkFunctions"
 repeats=${1:-5}
 export OMP_NUM_THREADS=1
 work=$(mktemp -d)
@@ -49,11 +50,7 @@ done
 
 # Medians over this invocation's repeats: CPU (user + sys) of the packing
 # run and of the -boxOnly floor, wall of the packing run
-tail -n +"$rows" "$csv" | sort -t, -k3,3 -k5,5 | awk -F, '
-    function median(v, k,   i, j, t) {
-        for (i = 2; i <= k; i++) for (j = i; j > 1 && v[j-1] > v[j]; j--) {
-            t = v[j]; v[j] = v[j-1]; v[j-1] = t }
-        return k % 2 ? v[(k+1)/2] : (v[k/2] + v[k/2+1])/2 }
+tail -n +"$rows" "$csv" | sort -t, -k3,3 -k5,5 | awk -F, "$awkMedian"'
     function flush() {
         if (key != "") printf "%-14s %-24s CPU s %.2f  wall s %.2f\n", c, p, median(cpu, n), median(wall, n) }
     { if ($3 "," $5 != key) { flush(); key = $3 "," $5; c = $3; p = $5; n = 0 }

@@ -19,6 +19,7 @@ set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 top="$(cd "$here/../.." && pwd)"
 . "$top/etc/bashrc" > /dev/null 2>&1
+. "$here/benchmarkFunctions"
 repeats=5
 while getopts r: opt; do
     case $opt in
@@ -65,12 +66,8 @@ for r in $(seq "$repeats"); do
 done
 
 # Medians over this invocation's repeats
-tail -n +"$rows" "$csv" | awk -F, '
+tail -n +"$rows" "$csv" | awk -F, "$awkMedian"'
     { rate[$5, $6] = $8; wall[$5, $6] = $9; cpu[$5, $6] = $10 + $11; n = $5 }
-    function median(v, k,   i, j, t) {
-        for (i = 2; i <= k; i++) for (j = i; j > 1 && v[j-1] > v[j]; j--) {
-            t = v[j]; v[j] = v[j-1]; v[j-1] = t }
-        return k % 2 ? v[(k+1)/2] : (v[k/2] + v[k/2+1])/2 }
     END {
         for (r = 1; r <= n; r++) {
             s[r] = (rate[r, "b1"] + rate[r, "b2"])/rate[r, "a"]
