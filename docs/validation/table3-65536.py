@@ -3,7 +3,8 @@
 
     docs/validation/table3-65536.py
 
-For Table 3 NW and YW at N = 65536 (run/validation/table3-65536/<case>):
+For Table 3 NW and YW at N = 65536 ($WSF_VALIDATION_DIR/table3-65536/<case>,
+by default run/validation/ in the checkout):
 the eta_r histories of both; the particle and ambient streamwise velocity
 and the local shear rate across y, averaged over the write times after the
 discarded start-up; the steady eta_r with its error bar (the solver's own
@@ -13,16 +14,28 @@ with (from the progress lines, which carry the process's CPU seconds: the
 difference between the first and the last line of each chunk over its
 strain, summed over the chunks of that thread count, so the set-up and
 any strain redone after a stop are not counted twice); the peak resident
-memory of the latest chunk (the largest its progress lines or end-of-run
-line give, from getrusage as /usr/bin/time -v: the current code's, as
+memory of the latest chunk that printed one (the largest its progress
+lines or end-of-run line give, from getrusage as /usr/bin/time -v: the current code's, as
 chunks may span versions).
 Writes docs/validation/table3-65536.csv and .png and the table between
 <!-- table:table3-65536 --> in docs/validation.md.
+
+A run directory holds the restart state (21-25 MB a write) and lives only
+as long as its machine, so what this script reads of it, a few hundred kB,
+is first copied to docs/validation/table3-65536/<case>/ in the same layout
+(postProcessing/rheology and profiles, wallSeconds, and of each solver log
+its set-up lines, progress lines, peak memory and any error), replacing the
+copy of before, and the analysis reads that copy: the
+table and figure can be made again, and checked, from the repository alone.
+A case with neither a run nor a copy keeps its row of the existing CSV
+(the column `data` says where each row comes from).
 """
+import csv
 import glob
 import math
 import os
 import re
+import shutil
 import sys
 
 import numpy as np
@@ -37,10 +50,43 @@ from rheologydata import (fillTables, readRheology, readSummaries,  # noqa: E402
 
 runs = os.path.join(os.environ.get("WSF_VALIDATION_DIR", os.path.join(root, "run", "validation")),
                     "table3-65536")
+kept = os.path.join(here, "table3-65536")
 CASES = ("NW", "YW")
-COLUMNS = ["case", "strain", "etaR", "etaR_error", "discarded_strain", "correlation_strain",
+COLUMNS = ["case", "data", "strain", "etaR", "etaR_error", "discarded_strain", "correlation_strain",
            "trusted", "N1", "N1_error", "N2", "N2_error", "steps_per_strain",
            "cpu_s_per_strain_1_thread", "cpu_s_per_strain_2_threads", "wall_s", "peak_rss_MB"]
+
+
+def keep(name):
+    """Mirror what the analysis reads of run <name> (when it is on this
+    machine) in kept/<name>, replaced whole, so that the copy never mixes
+    two runs (a run from restart.tar.xz holds all earlier output); return
+    kept/<name>, or None if neither exists"""
+    run, copy = os.path.join(runs, name), os.path.join(kept, name)
+    if os.path.isdir(run):
+        part = copy + ".part"
+        shutil.rmtree(part, ignore_errors=True)
+        os.makedirs(part)
+        for sub in ("rheology", "profiles"):
+            for f in glob.glob(os.path.join(run, "postProcessing", sub, "*", "*.dat")):
+                target = os.path.join(part, os.path.relpath(f, run))
+                os.makedirs(os.path.dirname(target), exist_ok=True)
+                shutil.copyfile(f, target)
+        if os.path.isfile(os.path.join(run, "wallSeconds")):
+            shutil.copyfile(os.path.join(run, "wallSeconds"), os.path.join(part, "wallSeconds"))
+        for log in glob.glob(os.path.join(run, "log.wavyShearFoam.*")):
+            with open(log) as src, open(os.path.join(part, os.path.basename(log)), "w") as dst:
+                setUp = True
+                for line in src:
+                    setUp = setUp and not line.startswith("Starting time loop")
+                    if setUp or re.match(r"strain \S+ |Peak resident memory|.*(FATAL|[Ee]rror)", line):
+                        dst.write(line)
+        restart = os.path.join(copy, "restart.tar.xz")
+        if os.path.isfile(restart):
+            os.replace(restart, os.path.join(part, "restart.tar.xz"))
+        shutil.rmtree(copy, ignore_errors=True)
+        os.replace(part, copy)
+    return copy if os.path.isdir(copy) else None
 
 
 def chunks(case):
@@ -72,8 +118,8 @@ def chunks(case):
 
 
 def analyse(name):
-    case = os.path.join(runs, name)
-    parts = chunks(case)
+    case = keep(name)
+    parts = chunks(case) if case else []
     if not parts:
         return None
     s = readSummaries(case) or {}
@@ -85,7 +131,7 @@ def analyse(name):
         return dC/dS if dS > 0 else float("nan")
 
     history = readRheology(case)
-    row = {"case": name,
+    row = {"case": name, "data": os.path.relpath(case, root),
            "strain": float(history["strain"][-1]) if history is not None else float("nan"),
            "etaR": e.get("mean", float("nan")), "etaR_error": e.get("se", float("nan")),
            "discarded_strain": e.get("discarded", float("nan")),
@@ -95,7 +141,8 @@ def analyse(name):
            "cpu_s_per_strain_1_thread": cpuPerStrain(1),
            "cpu_s_per_strain_2_threads": cpuPerStrain(2),
            "wall_s": wallSeconds(case),
-           "peak_rss_MB": parts[-1]["rss"]}
+           "peak_rss_MB": next((p["rss"] for p in reversed(parts) if not math.isnan(p["rss"])),
+                               float("nan"))}
     for q in ("N1", "N2"):
         row[q] = s.get(q, {}).get("mean", float("nan"))
         row[q + "_error"] = s.get(q, {}).get("se", float("nan"))
@@ -106,11 +153,11 @@ def analyse(name):
 
 
 def markdown(rows):
-    head = ("| case | strain run | eta_r | ± | discarded | correlation strain | trusted | N1 | N2 "
+    head = ("| case | data | strain run | eta_r | ± | discarded | correlation strain | trusted | N1 | N2 "
             "| steps per strain | CPU s per strain, 1 thread | CPU s per strain, 2 threads "
             "| peak RSS MB (last chunk) |\n"
-            "|---|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|\n")
-    fmt = ("| {case} | {strain:.2f} | {etaR:.3g} | {etaR_error:.2g} | {discarded_strain:.2f} "
+            "|---|---|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|\n")
+    fmt = ("| {case} | {data} | {strain:.2f} | {etaR:.3g} | {etaR_error:.2g} | {discarded_strain:.2f} "
            "| {correlation_strain:.2g} | {trusted} | {N1:.3g} | {N2:.3g} | {steps_per_strain:.0f} "
            "| {cpu_s_per_strain_1_thread} | {cpu_s_per_strain_2_threads} "
            "| {peak_rss_MB:.0f} |\n")
@@ -122,18 +169,37 @@ def markdown(rows):
     return head + "".join(fmt.format(**cells(r)) for r in rows)
 
 
+def earlierRows(path):
+    """The rows of the existing CSV, by case (strings as written)"""
+    try:
+        with open(path) as fh:
+            return {r["case"]: r for r in csv.DictReader(fh)}
+    except OSError:
+        return {}
+
+
 def main():
     results = {c: analyse(c) for c in CASES}
     results = {c: r for c, r in results.items() if r is not None}
     if not results:
-        print(f"no runs under {runs} (docs/validation/table3-65536.sh)")
+        print(f"no runs under {runs} nor in {kept} (docs/validation/table3-65536.sh)")
         return
     plotFig10({c: r[1] for c, r in results.items()}, {c: r[2] for c, r in results.items()},
               "Table 3, N = 65536: same initial condition",
               os.path.join(here, "table3-65536.png"))
 
-    rows = [r[0] for r in results.values()]
-    path = writeCsv(os.path.join(here, "table3-65536.csv"), rows, COLUMNS)
+    csvPath = os.path.join(here, "table3-65536.csv")
+    earlier = earlierRows(csvPath)
+    rows = []
+    for c in CASES:
+        if c in results:
+            rows.append(results[c][0])
+        elif c in earlier:
+            r = {k: earlier[c].get(k) or "" for k in COLUMNS}
+            r["data"] = r["data"] or "an earlier run, this row only"
+            rows.append({k: (v if k in ("case", "data", "trusted") else float(v or "nan"))
+                         for k, v in r.items()})
+    path = writeCsv(csvPath, rows, COLUMNS)
     table = (f"Table written by `docs/validation/table3-65536.py` from "
              f"`{os.path.relpath(path, root)}`:\n\n" + markdown(rows))
     print(table)

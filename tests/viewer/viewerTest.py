@@ -3,7 +3,7 @@ check what a user sees: the Lagrangian cloud with N points and its arrays,
 the Eulerian fields; then render the particles as spheres coloured by the
 particle stress S_xy to a PNG.
 
-    pvpython viewerTest.py <case> <N> <png>     (under xvfb-run)
+    pvpython viewerTest.py <case> <N> <png>     (on an X display: Xvfb)
 """
 import os
 import sys
