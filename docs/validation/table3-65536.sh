@@ -53,11 +53,12 @@ kept=$root/docs/validation/table3-65536
 # fields written only for viewing (positions, coordinates, S, Eulerian)
 keepRestart()
 {
-    local dir=$runRoot/$1 latest p
+    local dir=$runRoot/$1 latest p real
     # Not while a solver runs in it (the lock holds the script's pid, and a
     # solver outlives a killed script): a write may be half made
+    real=$(cd "$dir" 2> /dev/null && pwd -P) || { echo "table3-65536.sh: no run $dir" >&2; return 1; }
     for p in /proc/[0-9]*; do
-        if [ "$(readlink "$p/cwd" 2> /dev/null)" = "$(cd "$dir" 2> /dev/null && pwd -P)" ]; then
+        if [ "$(readlink "$p/cwd" 2> /dev/null)" = "$real" ]; then
             echo "table3-65536.sh: process ${p#/proc/} runs in $dir;" \
                 "stop it (its last write stays) before -k" >&2
             return 1
