@@ -17,8 +17,12 @@ any strain redone after a stop are not counted twice); the peak resident
 memory of the latest chunk that printed one (the largest its progress
 lines or end-of-run line give, from getrusage as /usr/bin/time -v: the current code's, as
 chunks may span versions).
-Writes docs/validation/table3-65536.csv and .png and the table between
-<!-- table:table3-65536 --> in docs/validation.md.
+Writes docs/validation/table3-65536.csv and .png, the table between
+<!-- table:table3-65536 --> in docs/validation.md, and
+table3-65536-migration.png: the solid fraction across y at a few strains
+and, against strain, its mean over the bins where the wavy flow shears at
+under 0.6 and over 1.5 times the mean rate (the same bins for both cases:
+in NW they show whether the regions differ at all).
 
 A run directory holds the restart state (21-25 MB a write) and lives only
 as long as its machine, so what this script reads of it, a few hundred kB,
@@ -44,7 +48,7 @@ here = os.path.dirname(os.path.abspath(__file__))
 root = os.path.dirname(os.path.dirname(here))
 sys.path.insert(0, os.path.dirname(here))
 sys.path.insert(0, here)
-from analyse import plotFig10, readProfiles  # noqa: E402
+from analyse import plt, plotFig10, readProfiles  # noqa: E402
 from rheologydata import (fillTables, readRheology, readSummaries,  # noqa: E402
                           wallSeconds, writeCsv)
 
@@ -152,6 +156,55 @@ def analyse(name):
     return row, history, readProfiles(case, start)
 
 
+def profileSeries(case):
+    """{strain: profile rows} of every write of run copy <case>"""
+    out = {}
+    for f in glob.glob(os.path.join(case, "postProcessing", "profiles", "*", "profiles.dat")):
+        out[float(os.path.basename(os.path.dirname(f)))] = np.loadtxt(f, comments="#")
+    return dict(sorted(out.items()))
+
+
+def plotMigration(series, path):
+    """Shear-induced migration: phi(y) about strains 0, 1, 2, ... and the mean
+    phi of the low- and high-shear bins of the wavy flow against strain"""
+    wavy = next((s for s in series.values() if s and np.ptp(next(iter(s.values()))[:, 5]) > 0.1),
+                None)
+    if wavy is None:
+        return
+    # The bins of the latest write; the set-up's profile at strain 0 has
+    # the default bins (makeSuspension writes it before the set-up sets
+    # nBins) and is left out with any other of a different binning
+    rate = list(wavy.values())[-1][:, 5]
+    low, high = rate < 0.6, rate > 1.5
+    series = {c: {t: p for t, p in s.items() if len(p) == len(rate)} for c, s in series.items()}
+    fig, axes = plt.subplots(1, 2, figsize=(10, 3.8))
+    for (label, s), colour in zip(series.items(), ("C0", "C3")):
+        if not s:
+            continue
+        times = np.array(list(s))
+        # phi(y) averaged over the writes within 0.25 strain of 0, 1, 2, ...
+        shown = [k for k in range(int(times[-1] + 0.25) + 1)]
+        for n, k in enumerate(shown):
+            near = [t for t in times if abs(t - k) <= 0.25]
+            phi = np.mean([s[t][:, 2] for t in near], axis=0)
+            axes[0].plot(phi, s[near[0]][:, 0], color=colour, alpha=0.3 + 0.7*(n + 1)/len(shown),
+                         lw=1, label=f"{label}, strain {min(near):g}–{max(near):g}")
+        for mask, style, where in ((low, "-", r"< 0.6 $\dot\gamma$"),
+                                   (high, "--", r"> 1.5 $\dot\gamma$")):
+            axes[1].plot(times, [s[t][mask, 2].mean() for t in times], style, color=colour,
+                         label=f"{label}: bins where YW's d$U_\\infty$/dy {where}")
+    axes[0].set_xlabel(r"solid fraction $\phi$ (bins of 2.75 $a_0$)")
+    axes[0].set_ylabel(r"$y/a_0$")
+    axes[0].legend(fontsize=6)
+    axes[1].set_xlabel(r"strain $\dot\gamma t$")
+    axes[1].set_ylabel(r"mean $\phi$ of the bins")
+    axes[1].legend(fontsize=6)
+    axes[0].set_title("shear-induced migration")
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
 def markdown(rows):
     head = ("| case | data | strain run | eta_r | ± | discarded | correlation strain | trusted | N1 | N2 "
             "| steps per strain | CPU s per strain, 1 thread | CPU s per strain, 2 threads "
@@ -188,13 +241,19 @@ def main():
               "Table 3, N = 65536: same initial condition",
               os.path.join(here, "table3-65536.png"))
 
+    plotMigration({c: profileSeries(os.path.join(kept, c)) for c in results},
+                  os.path.join(here, "table3-65536-migration.png"))
+
     csvPath = os.path.join(here, "table3-65536.csv")
     earlier = earlierRows(csvPath)
     rows = []
     for c in CASES:
         if c in results:
             rows.append(results[c][0])
-        elif c in earlier:
+        # A row kept from an earlier run stays while it has run further
+        # than the run here (a rerun from strain 0 supersedes it only then)
+        if c in earlier and not (c in results and earlier[c]["data"] == results[c][0]["data"]) \
+                and not (c in results and float(earlier[c]["strain"] or "nan") <= results[c][0]["strain"]):
             r = {k: earlier[c].get(k) or "" for k in COLUMNS}
             r["data"] = r["data"] or "an earlier run, this row only"
             rows.append({k: (v if k in ("case", "data", "trusted") else float(v or "nan"))
