@@ -174,9 +174,10 @@ def plotMigration(series, path):
     # The bins of the latest write; the set-up's profile at strain 0 has
     # the default bins (makeSuspension writes it before the set-up sets
     # nBins) and is left out with any other of a different binning
-    rate = list(wavy.values())[-1][:, 5]
+    y, rate = list(wavy.values())[-1][:, 0], list(wavy.values())[-1][:, 5]
     low, high = rate < 0.6, rate > 1.5
-    series = {c: {t: p for t, p in s.items() if len(p) == len(rate)} for c, s in series.items()}
+    series = {c: {t: p for t, p in s.items() if p.shape[0] == len(y) and np.allclose(p[:, 0], y)}
+              for c, s in series.items()}
     fig, axes = plt.subplots(1, 2, figsize=(10, 3.8))
     for (label, s), colour in zip(series.items(), ("C0", "C3")):
         if not s:
@@ -186,14 +187,17 @@ def plotMigration(series, path):
         shown = [k for k in range(int(times[-1] + 0.25) + 1)]
         for n, k in enumerate(shown):
             near = [t for t in times if abs(t - k) <= 0.25]
+            if not near:
+                continue
             phi = np.mean([s[t][:, 2] for t in near], axis=0)
             axes[0].plot(phi, s[near[0]][:, 0], color=colour, alpha=0.3 + 0.7*(n + 1)/len(shown),
                          lw=1, label=f"{label}, strain {min(near):g}–{max(near):g}")
         for mask, style, where in ((low, "-", r"< 0.6 $\dot\gamma$"),
                                    (high, "--", r"> 1.5 $\dot\gamma$")):
             axes[1].plot(times, [s[t][mask, 2].mean() for t in times], style, color=colour,
+                         marker="o" if len(times) == 1 else None,
                          label=f"{label}: bins where YW's d$U_\\infty$/dy {where}")
-    axes[0].set_xlabel(r"solid fraction $\phi$ (bins of 2.75 $a_0$)")
+    axes[0].set_xlabel(rf"solid fraction $\phi$ (bins of {y[1] - y[0]:.3g} $a_0$)")
     axes[0].set_ylabel(r"$y/a_0$")
     axes[0].legend(fontsize=6)
     axes[1].set_xlabel(r"strain $\dot\gamma t$")
@@ -223,12 +227,15 @@ def markdown(rows):
 
 
 def earlierRows(path):
-    """The rows of the existing CSV, by case (strings as written)"""
+    """The rows of the existing CSV, as lists by case (strings as written)"""
+    out = {}
     try:
         with open(path) as fh:
-            return {r["case"]: r for r in csv.DictReader(fh)}
+            for r in csv.DictReader(fh):
+                out.setdefault(r["case"], []).append(r)
     except OSError:
-        return {}
+        pass
+    return out
 
 
 def main():
@@ -250,12 +257,14 @@ def main():
     for c in CASES:
         if c in results:
             rows.append(results[c][0])
-        # A row kept from an earlier run stays while it has run further
-        # than the run here (a rerun from strain 0 supersedes it only then)
-        if c in earlier and not (c in results and earlier[c]["data"] == results[c][0]["data"]) \
-                and not (c in results and float(earlier[c]["strain"] or "nan") <= results[c][0]["strain"]):
-            r = {k: earlier[c].get(k) or "" for k in COLUMNS}
-            r["data"] = r["data"] or "an earlier run, this row only"
+        # A row of an earlier run (one whose copy has since been replaced
+        # by a rerun's, or lost) stays while it has run further than the
+        # run here: a rerun from strain 0 supersedes it only then
+        for e in earlier.get(c, []):
+            if c in results and float(e["strain"] or "inf") <= results[c][0]["strain"]:
+                continue
+            r = {k: e.get(k) or "" for k in COLUMNS}
+            r["data"] = "an earlier run, this row only"
             rows.append({k: (v if k in ("case", "data", "trusted") else float(v or "nan"))
                          for k, v in r.items()})
     path = writeCsv(csvPath, rows, COLUMNS)

@@ -172,7 +172,9 @@ bool Foam::functionObjects::suspensionRheology::summarise(const bool report)
             << "# start-up transient: "
             << (discardStrain_ >= 0 ? "discardStrain" : "MSER-5 rule on etaR")
             << ", strain " << strain.front() << " to "
-            << strain.front() + opt.discardStrain << " discarded" << nl
+            << strain.front() + opt.discardStrain << " discarded"
+            << " (strainDiscarded adds, for each quantity, the oldest"
+            << " samples that do not fill a block)" << nl
             << "# error bars: means of blocks of two correlation strains,"
             << " trusted with >= " << label(opt.minBlocks) << " blocks over"
             << " >= " << minSteadyStrain_ << " strain" << nl
