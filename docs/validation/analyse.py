@@ -195,13 +195,17 @@ def shearThickening():
     return rows
 
 
+def profileSeries(case):
+    """{strain: profile rows} of every write of <case>, in strain order"""
+    out = {}
+    for f in glob.glob(os.path.join(case, "postProcessing", "profiles", "*", "profiles.dat")):
+        out[float(os.path.basename(os.path.dirname(f)))] = np.loadtxt(f, comments="#")
+    return dict(sorted(out.items()))
+
+
 def readProfiles(case, start):
     """Mean profile over the write times after `start`"""
-    files = []
-    for f in glob.glob(os.path.join(case, "postProcessing", "profiles", "*", "profiles.dat")):
-        t = float(os.path.basename(os.path.dirname(f)))
-        if t > start:
-            files.append(np.loadtxt(f, comments="#"))
+    files = [p for t, p in profileSeries(case).items() if t > start]
     if not files:
         return None
     return np.mean(files, axis=0), len(files)

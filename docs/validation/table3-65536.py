@@ -48,7 +48,7 @@ here = os.path.dirname(os.path.abspath(__file__))
 root = os.path.dirname(os.path.dirname(here))
 sys.path.insert(0, os.path.dirname(here))
 sys.path.insert(0, here)
-from analyse import plt, plotFig10, readProfiles  # noqa: E402
+from analyse import plt, plotFig10, profileSeries, readProfiles  # noqa: E402
 from rheologydata import (fillTables, readRheology, readSummaries,  # noqa: E402
                           wallSeconds, writeCsv)
 
@@ -154,14 +154,6 @@ def analyse(name):
     if math.isnan(start):
         start = 0.0
     return row, history, readProfiles(case, start)
-
-
-def profileSeries(case):
-    """{strain: profile rows} of every write of run copy <case>"""
-    out = {}
-    for f in glob.glob(os.path.join(case, "postProcessing", "profiles", "*", "profiles.dat")):
-        out[float(os.path.basename(os.path.dirname(f)))] = np.loadtxt(f, comments="#")
-    return dict(sorted(out.items()))
 
 
 def plotMigration(series, path):
