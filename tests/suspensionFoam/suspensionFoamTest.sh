@@ -68,6 +68,34 @@
 #               packs to phi = 0.55; d holds the three radii in the
 #               requested volume fractions; the log reports them
 #   radiusFile  population type file: the radii of d are those of the file
+#   killRestart 30 kills (-9) of a frictional run that writes every outer
+#               step, half at a random moment, half in the middle of a
+#               write call (faultInjection/writeFaults.C: a torn write,
+#               then SIGKILL), each followed by a restart: every restart
+#               starts from a complete time (an incomplete one set aside),
+#               and the finished run's times are bitwise the uninterrupted
+#               run's
+#   incompleteTime
+#               a latest time truncated by hand, one without its state and
+#               one with only uniform/time: the restart sets them aside
+#               with a log line and starts from the latest complete time;
+#               startFrom startTime naming an incomplete time is an error
+#               naming the latest complete one
+#   failedWrite a write that fails (a file size limit, ulimit -f: what a
+#               full disk does to a write) stops the run with an error
+#               naming the file; the earlier times are intact, the failed
+#               one has no state and is set aside by the restart
+#   badControls deltaT <= 0, an endTime before the start time and a number
+#               out of range (1e999) in controlDict or suspensionProperties:
+#               FatalIOErrors naming the file and the entry
+#   oversizedCase
+#               a population too large for the machine's memory is refused
+#               by makeSuspension -boxOnly, makeSuspension and the solver
+#               before any packing, with the estimate and the limit
+#   nonFiniteState
+#               a stored state with a NaN velocity is a FatalIOError naming
+#               the file; a run that blows up under OpenFOAM's floating-
+#               point trap stops with the cause and its last good state
 #------------------------------------------------------------------------------
 set -euo pipefail
 
@@ -276,7 +304,7 @@ expectExactRestart()
     export OMP_NUM_THREADS=2
     (cd "$a" && wavyShearFoam > log.wavyShearFoam 2>&1) \
         || fail "uninterrupted run $1"
-    contacts=$(awk '/nContacts/ { print $2 + 0 }' \
+    contacts=$(awk '$1 == "nContacts" { print $2 + 0 }' \
         "$a/0.05/uniform/suspensionState")
     [ "$contacts" -gt 0 ] || fail "$1: no contact history at 0.05"
 
@@ -342,6 +370,14 @@ dimensional
     debyeLength     2e-8;                   // m: 0.02 a0
 }
 EOF
+}
+
+# A state made by hand from the time directory $1 (its files edited): the
+# digests of the files removed from its state
+handMade()
+{
+    foamDictionary -entry files -remove "$1/uniform/suspensionState" \
+        > /dev/null 2>&1 || fail "cannot remove the digests of $1"
 }
 
 # The engine parameters of the start-up report of log $1
@@ -446,6 +482,7 @@ implicitRestart)
         cp -r "$work/$integrator.restarted" "$old"
         rm -rf "$old/0.1" "$old/postProcessing/rheology/0.05" \
             "$old"/0.05/lagrangian/suspension/d*dt
+        handMade "$old/0.05"
         (cd "$old" && wavyShearFoam > log.wavyShearFoam 2>&1) \
             || fail "$integrator: restart from a cloud without dUdt"
         cmp -s "$work/$integrator/0.1/lagrangian/suspension/U" "$old/0.1/lagrangian/suspension/U" \
@@ -555,6 +592,236 @@ failure)
         || fail "no restart from the last good state $last"
     grep -q "stored suspension of .*/$last/" "$log" \
         || fail "the restart did not start from $last"
+    ;;
+
+killRestart)
+    # A frictional run (contacts with history from the first outer steps)
+    # that writes every outer step; the uninterrupted run is the reference
+    softDenseCase ref
+    setEntry ref system/controlDict writeInterval 1
+    setEntry ref system/controlDict endTime 1
+    (cd "$work/ref" && makeSuspension > log.makeSuspension 2>&1) \
+        || fail "makeSuspension"
+    cp -r "$work/ref" "$work/k"
+    runCase ref "uninterrupted"
+    times=$(cd "$work/ref" && foamListTimes 2>/dev/null)
+
+    # The calls that write to disk in an outer step, to aim the kills at
+    shim="$work/libwriteFaults.so"
+    g++ -O1 -shared -fPIC -o "$shim" "$(dirname "$0")/faultInjection/writeFaults.C" -ldl \
+        || fail "cannot build the fault injection library"
+    cp -r "$work/k" "$work/count"
+    setEntry count system/controlDict endTime 0.1
+    (cd "$work/count" && LD_PRELOAD="$shim" WSF_FAULT_COUNT="$work/calls" \
+        wavyShearFoam > log.wavyShearFoam 2>&1) || fail "the counting run"
+    perStep=$(( $(cat "$work/calls")/10 ))
+    [ "$perStep" -gt 10 ] || fail "only $perStep write calls an outer step"
+
+    # 30 kills, each followed by the next trial's restart: half at a random
+    # moment of the time loop, half at a random write call of the first 4
+    # outer steps (a torn write, then SIGKILL)
+    RANDOM=27
+    kills=0
+    for trial in $(seq 1 30); do
+        log="$work/k/log.trial$trial"
+        if [ $((trial % 2)) = 0 ]; then
+            at=$((1 + RANDOM % (4*perStep)))
+            (cd "$work/k" && LD_PRELOAD="$shim" WSF_FAULT_KILL_AT=$at \
+                exec wavyShearFoam > "$log" 2>&1) && break
+        else
+            # at a random moment of the first 0.1 s of the time loop
+            (cd "$work/k" && exec wavyShearFoam > "$log" 2>&1) &
+            pid=$!
+            while kill -0 $pid 2>/dev/null && ! grep -q "^Starting time loop" "$log"; do
+                sleep 0.01
+            done
+            sleep "0.0$((RANDOM % 10))$((RANDOM % 10))"
+            kill -9 $pid 2>/dev/null || true
+            wait $pid && break
+        fi
+        kills=$((kills + 1))
+        # A restart takes a complete time, or stops: the next trial's log
+        grep -q "FOAM FATAL" "$log" && fail "trial $trial: $(grep -A3 'FOAM FATAL' "$log")"
+    done
+    [ "$kills" = 30 ] || fail "the run ended after $kills kills: lengthen it"
+    runCase k "after the kills"
+    grep -q "FOAM FATAL" "$work"/k/log.* && fail "a restart failed"
+    restarts=$(cat "$work"/k/log.trial* "$work/k/log.wavyShearFoam" | grep -c "stored suspension of")
+    aside=$(ls -d "$work"/k/*.incomplete* 2>/dev/null | wc -l)
+    echo "killRestart: $kills kills, $restarts restarts, $aside incomplete times set aside"
+    [ "$aside" -gt 0 ] || fail "no kill left an incomplete time (aim the kills)"
+
+    # Every time of the finished run is the uninterrupted run's, bitwise
+    for t in $times; do
+        for f in "$work/ref/$t"/lagrangian/suspension/* \
+            "$work/ref/$t"/lagrangian/suspensionContacts/*; do
+            rel=${f#"$work/ref/"}
+            cmp -s "$f" "$work/k/$rel" || fail "$rel differs from the uninterrupted run"
+        done
+        state=uniform/suspensionState
+        diff <(awk '$1 ~ /^(time|steps|nContacts|offset)$/' "$work/ref/$t/$state") \
+             <(awk '$1 ~ /^(time|steps|nContacts|offset)$/' "$work/k/$t/$state") \
+            > /dev/null || fail "$t: the state differs"
+    done
+    ;;
+
+incompleteTime)
+    newCase c
+    setEntry c system/controlDict writeInterval 1
+    runCase c "to 0.004"
+    # 0.004 truncated, 0.003 without its state, a time 0.005 holding only
+    # OpenFOAM's uniform/time
+    x="$work/c/0.004/lagrangian/suspension/x"
+    head -c 2000 "$x" > "$x.tmp" && mv "$x.tmp" "$x"
+    rm "$work/c/0.003/uniform/suspensionState"
+    mkdir -p "$work/c/0.005/uniform"
+    cp "$work/c/0.002/uniform/time" "$work/c/0.005/uniform/time"
+    cp -r "$work/c" "$work/s"
+    setEntry c system/controlDict endTime 0.005
+    runCase c "restart from the latest complete time"
+    log="$work/c/log.wavyShearFoam"
+    grep -q "Time 0.004 is incomplete (0.004/lagrangian/suspension/x holds 2000 bytes" "$log" \
+        || fail "no log line for the truncated time"
+    grep -q "Time 0.003 is incomplete (no uniform/suspensionState" "$log" \
+        || fail "no log line for the time without its state"
+    grep -q "Time 0.005 is incomplete (uniform/time but no suspension)" "$log" \
+        || fail "no log line for the time with only uniform/time"
+    grep -q "stored suspension of .*/0.002/uniform/suspensionState" "$log" \
+        || fail "the restart did not start from 0.002"
+    for t in 0.003 0.004 0.005; do
+        [ -d "$work/c/$t.incomplete" ] || fail "$t not set aside"
+    done
+    [ "$(head -c 2000 "$work/c/0.004.incomplete/lagrangian/suspension/x" | cmp - "$work/s/0.004/lagrangian/suspension/x" && echo same)" = same ] \
+        || fail "the incomplete time was changed"
+    [ -f "$work/c/0.005/uniform/suspensionState" ] || fail "the run did not go on to 0.005"
+
+    # startFrom startTime at an incomplete time: an error naming the
+    # latest complete one, and nothing changed
+    setEntry s system/controlDict startFrom startTime
+    setEntry s system/controlDict startTime 0.004
+    (cd "$work/s" && wavyShearFoam > log.wavyShearFoam 2>&1) \
+        && fail "a start from the incomplete time 0.004 was accepted"
+    log="$work/s/log.wavyShearFoam"
+    grep -q "FOAM FATAL IO ERROR" "$log" || fail "no FatalIOError"
+    grep -q "time 0.002 holds a complete one" "$log" \
+        || fail "the error does not name the latest complete time"
+    grep -q "controlDict" "$log" || fail "the error does not name controlDict"
+    [ -d "$work/s/0.004" ] && [ ! -e "$work/s/0.004.incomplete" ] \
+        || fail "the incomplete start time was moved"
+    ;;
+
+failedWrite)
+    newCase c
+    setEntry c system/controlDict writeInterval 1
+    (cd "$work/c" && makeSuspension > log.makeSuspension 2>&1) \
+        || fail "makeSuspension"
+    cp -r "$work/c/0" "$work/zero"
+    size=$(stat -c %s "$work/c/0/lagrangian/suspension/x")
+    # Files of a few kB are written whole, x (about $size bytes) is not: a
+    # write then fails with EFBIG as it would with ENOSPC on a full disk
+    if (cd "$work/c" && trap '' XFSZ && ulimit -f $(( (size - 1500)/1024 )) \
+        && exec wavyShearFoam > log.wavyShearFoam 2>&1); then
+        fail "the run went on past a failed write"
+    fi
+    log="$work/c/log.wavyShearFoam"
+    # Ours, or OpenFOAM's own check of the stream (the cloud's positions)
+    grep -qE "FOAM FATAL (IO )?ERROR" "$log" || fail "no FatalError"
+    grep -qE "(Cannot write|error in IOstream|The file) .*0.001/lagrangian/suspension/" "$log" \
+        || fail "the error does not name the file"
+    [ ! -e "$work/c/0.001/uniform/suspensionState" ] \
+        || fail "the failed time has a state"
+    diff -r "$work/zero" "$work/c/0" > /dev/null || fail "time 0 changed"
+    runCase c "after the failed write"
+    grep -q "Time 0.001 is incomplete" "$work/c/log.wavyShearFoam" \
+        || fail "the restart did not set the failed time aside"
+    ;;
+
+badControls)
+    for value in 0 -0.001; do
+        newCase "d$value"
+        setEntry "d$value" $control deltaT "$value"
+        expectInputError "d$value" controlDict "'deltaT'"
+    done
+    # (foamDictionary itself dies of the floating-point trap on 1e999)
+    newCase huge
+    sed -i 's/^\( *stiffness  *\)[^;]*;/\11e999;/' "$work/huge/$properties"
+    grep -q "stiffness *1e999;" "$work/huge/$properties" || fail "cannot set 1e999"
+    expectInputError huge suspensionProperties stiffness
+    newCase hugeControl
+    sed -i 's/^endTime .*/endTime 1e999;/' "$work/hugeControl/$control"
+    (cd "$work/hugeControl" && wavyShearFoam > log.wavyShearFoam 2>&1) \
+        && fail "endTime 1e999 was accepted"
+    grep -q "FOAM FATAL IO ERROR" "$work/hugeControl/log.wavyShearFoam" \
+        || fail "endTime 1e999: no FatalIOError"
+    grep -q "endTime" "$work/hugeControl/log.wavyShearFoam" \
+        || fail "endTime 1e999: the error does not name the entry"
+    # endTime before the start time of a restart
+    newCase e
+    runCase e "to 0.004"
+    setEntry e $control endTime 0.002
+    (cd "$work/e" && wavyShearFoam > log.wavyShearFoam 2>&1) \
+        && fail "an endTime before the start time was accepted"
+    grep -q "FOAM FATAL IO ERROR" "$work/e/log.wavyShearFoam" || fail "no FatalIOError"
+    grep -q "Entry 'endTime' = 0.002 in .*controlDict\" is before the start time 0.004" \
+        "$work/e/log.wavyShearFoam" || fail "the error does not name endTime"
+    ;;
+
+oversizedCase)
+    newCase c
+    setEntry c $properties population/nParticles 100000000
+    for program in "makeSuspension -boxOnly" makeSuspension wavyShearFoam; do
+        log="$work/c/log.${program// /}"
+        start=$(date +%s)
+        (cd "$work/c" && timeout 60 $program > "$log" 2>&1) \
+            && fail "$program accepted 10^8 particles"
+        [ $(( $(date +%s) - start )) -lt 20 ] || fail "$program took too long to refuse"
+        grep -q "FOAM FATAL IO ERROR" "$log" || fail "$program: no FatalIOError"
+        grep -q "nParticles" "$log" || fail "$program: the error does not name nParticles"
+        grep -qE "needs at least [0-9.]+ GB.* has [0-9.]+ GB" "$log" \
+            || fail "$program: no estimate and limit"
+    done
+    ;;
+
+nonFiniteState)
+    newCase c
+    (cd "$work/c" && makeSuspension > log.makeSuspension 2>&1) \
+        || fail "makeSuspension"
+    # A binary state with a NaN velocity (ascii cannot hold one)
+    setEntry c $control writeFormat binary
+    runCase c "to 0.004"
+    python3 - "$work/c/0.004/lagrangian/suspension/U" <<'PY' || fail "cannot write the NaN"
+import struct, sys
+f = sys.argv[1]
+b = bytearray(open(f, "rb").read())
+start = b.index(b"(", b.index(b"FoamFile") + 200) + 1      # the data of the list
+b[start:start + 8] = struct.pack("d", float("nan"))
+open(f, "wb").write(b)
+PY
+    handMade "$work/c/0.004"
+    setEntry c $control endTime 0.006
+    (cd "$work/c" && wavyShearFoam > log.wavyShearFoam 2>&1) \
+        && fail "a NaN velocity was accepted"
+    log="$work/c/log.wavyShearFoam"
+    grep -q "FOAM FATAL IO ERROR" "$log" || fail "no FatalIOError"
+    grep -q "0.004/lagrangian/suspension/U" "$log" || fail "the error does not name the file"
+    grep -q "must be finite" "$log" || fail "the error does not say why"
+
+    # Explicit steps far above the stability limit, under OpenFOAM's
+    # floating-point trap: the run stops with the cause, not SIGFPE
+    newCase b
+    setEntry b $properties integration/deltaT 0.05
+    setEntry b $control endTime 0.2
+    setEntry b $control deltaT 0.05
+    if (cd "$work/b" && wavyShearFoam > log.wavyShearFoam 2>&1); then
+        fail "an unstable run did not stop"
+    fi
+    log="$work/b/log.wavyShearFoam"
+    grep -q "trapFpe: Floating point exception trapping enabled" "$log" \
+        || fail "the run was not under the floating-point trap"
+    grep -q "sigFpe\|printStack" "$log" && fail "the run died of a floating-point trap"
+    grep -q "FOAM FATAL ERROR" "$log" || fail "no FatalError"
+    grep -qE "non-finite|runaway overlap" "$log" || fail "no diagnostic"
+    grep -q "last good state" "$log" || fail "no last good state reported"
     ;;
 
 badVolumeFraction)
@@ -861,6 +1128,7 @@ inconsistentCloud)
         skip == 1 && $0 == "(" { print; skip = 2; next }
         skip == 2 { skip = 0; done = 1; next }
         { print }' "$d" > "$d.tmp" && mv "$d.tmp" "$d"
+    handMade "$work/c/0"
     expectInputError c "0/lagrangian/suspension/d" "holds 99 entries"
     ;;
 
@@ -881,6 +1149,7 @@ overlappingStart|jammedStart)
     awk -v f=$factor '/^\(/ { inside = 1; print; next } /^\)/ { inside = 0 }
         { if (inside) printf "%.12g\n", f*$1; else print }' "$d" > "$d.tmp" \
         && mv "$d.tmp" "$d"
+    handMade "$work/c/0"
     if [ "$test" = jammedStart ]; then
         expectInputError c "0/uniform/suspensionState" "cannot be separated" "jam"
     else

@@ -18,6 +18,7 @@ Description
 int main(int argc, char *argv[])
 {
     #include "setRootCase.H"
+    suspensionIO::selectStartTime(args);    // start from a complete time
     #include "createTime.H"
     #include "createMesh.H"
 
@@ -36,6 +37,7 @@ int main(int argc, char *argv[])
         particles.evolve();
         runTime.write();
     }
+    particles.writeLastState();
     Info<< "End\n" << endl;
     return 0;
 }

@@ -18,18 +18,24 @@ Description
 
     The OpenFOAM time step deltaT is the sampling interval: each time step
     advances the particles by deltaT in engine steps of the stability
-    limit (times safety) and one shorter last step that lands on the time. The run starts from the suspension stored at the
-    start time (startFrom latestTime continues a run bitwise, for the same
-    number of threads), or from a new random packing of the population if
-    the start time holds none.
+    limit (times safety) and one shorter last step that lands on the time.
+    The run starts from the suspension stored at the start time (startFrom
+    latestTime continues a run bitwise, for any number of threads; an
+    incomplete latest time, from a write stopped by a kill or a crash, is
+    set aside as <time>.incomplete and the latest complete one taken:
+    suspensionIO::selectStartTime), or from a new random packing of the
+    population if the start time holds none.
 
     The suspension (Foam::suspensionCloud) is registered in the mesh as
     "suspension"; function objects find it by
     mesh.lookupObject<suspensionCloud>("suspension").
 
     Output: at write times the cloud lagrangian/suspension (with positions
-    for ParaView), the contact history and uniform/suspensionState (what a
-    restart reads). The rest is written by the function objects of
+    for ParaView), the contact history and, last, uniform/suspensionState
+    (what a restart reads, with the sizes and digests of the time's files:
+    a time is complete or has no state). A failure (a non-finite value, a
+    runaway overlap, an unconverged solve, any engine error) stops the run
+    with the cause and the last good state on disk (suspensionCloud.H). The rest is written by the function objects of
     libsuspensionFunctionObjects selected in system/controlDict:
     suspensionRheology (postProcessing/<name>/<startTime>/rheology.dat),
     suspensionProfiles (postProcessing/<name>/<time>/profiles.dat) and
@@ -54,6 +60,11 @@ int main(int argc, char *argv[])
     argList::noParallel();
 
     #include "setRootCase.H"
+
+    // An incomplete latest time (a write stopped by a kill or a crash) is
+    // set aside, so that the run starts from the latest complete time
+    suspensionIO::selectStartTime(args);
+
     #include "createTime.H"
     #include "createMesh.H"
     #include "createFields.H"
@@ -72,6 +83,7 @@ int main(int argc, char *argv[])
 
         runTime.write();
     }
+    particles.writeLastState();
 
     particles.reportKernelTimes();
     runTime.printExecutionTime(Info);

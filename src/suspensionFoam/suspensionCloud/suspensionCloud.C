@@ -1,6 +1,7 @@
 #include "suspensionCloud.H"
 #include "inputChecks.H"
 #include "boundBox.H"
+#include "core/Parallel.H"
 
 #include <omp.h>
 #include <sys/resource.h>
@@ -37,6 +38,50 @@ std::string clockTime(const double seconds)
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+bool Foam::suspensionCloud::startsFromStored(const Time& runTime)
+{
+    const dictionary& control = runTime.controlDict();
+    if (!(runTime.deltaTValue() > 0))
+    {
+        FatalIOErrorInFunction(control)
+            << "Entry 'deltaT' = " << runTime.deltaTValue() << " in "
+            << control.name() << " must be positive: it is the"
+            << " sampling interval, within which the engine takes its own"
+            << " steps (integration/deltaT)" << nl << exit(FatalIOError);
+    }
+    if
+    (
+        control.getOrDefault<word>("stopAt", "endTime") == "endTime"
+     && runTime.endTime().value() < runTime.value()
+    )
+    {
+        FatalIOErrorInFunction(control)
+            << "Entry 'endTime' = " << runTime.endTime().value() << " in "
+            << control.name() << " is before the start time "
+            << runTime.timeName() << ": nothing would run. Raise endTime to"
+            << " continue the run" << nl << exit(FatalIOError);
+    }
+
+    const suspensionIO::stored s = suspensionIO::check(runTime.timePath());
+    if (s.state == suspensionIO::stored::incomplete)
+    {
+        const fileName stateFile =
+            runTime.timePath()/"uniform"/suspensionIO::stateName;
+        FatalIOErrorInFunction(stateFile)
+            << "The start time " << runTime.timeName() << " holds an"
+            << " incomplete suspension: " << s.reason.c_str() << nl
+            << "    With startFrom latestTime, wavyShearFoam sets incomplete"
+            << " latest times aside and starts from the latest complete one."
+            << " Files edited on purpose (a state made by hand): remove the"
+            << " entry 'files' (their digests) from " << stateFile << ". To"
+            << " pack anew: remove " << runTime.timePath()/"lagrangian"
+            << " and " << runTime.timePath()/"uniform" << nl
+            << exit(FatalIOError);
+    }
+    return s.state == suspensionIO::stored::complete;
+}
+
 
 Foam::suspensionIO::state Foam::suspensionCloud::initialState() const
 {
@@ -209,6 +254,7 @@ void Foam::suspensionCloud::writeState() const
     (
         mesh_, *sim_, steps(*sim_), particleStresslets(), particleCells()
     );
+    writtenIndex_ = runTime_.timeIndex();
 
     // A run restarted from this time starts by re-sorting the particles and
     // rebuilding the neighbour list; so does this one before its next step
@@ -216,32 +262,40 @@ void Foam::suspensionCloud::writeState() const
 }
 
 
-void Foam::suspensionCloud::failed(const suspension::SimulationError& err)
+void Foam::suspensionCloud::failed(const std::string& cause)
 {
-    // The last good state is the one written (writeObject), continued
-    // from as a restart from it would be
+    // The last good state, continued from as a restart from it would be
     try
     {
+        const suspension::NonStopArithmetic nonStop;
         sim_->restore(lastGood_);
     }
     catch (const std::exception& restoreErr)
     {
         FatalErrorInFunction
-            << err.what() << nl
+            << cause.c_str() << nl
             << "    The last good state (time " << lastGoodTime_
             << ") could not be restored, nothing was written: "
             << restoreErr.what() << nl << exit(FatalError);
     }
+
+    // Written unless this run has it on disk: a time on disk, above all
+    // the one the run started from, is never written over
+    const bool onDisk = lastGoodIndex_ == writtenIndex_;
     runTime_.setTime(lastGoodTime_, lastGoodIndex_);
-    runTime_.writeNow();
+    if (!onDisk)
+    {
+        runTime_.writeNow();
+    }
 
     FatalErrorInFunction
-        << err.what() << nl
+        << cause.c_str() << nl
         << "    The last good state (time " << runTime_.timeName()
-        << ", strain " << sim_->time() << ", step "
-        << steps(*sim_) << ") is written to " << runTime_.timePath()
-        << nl << "    To continue from it, lower integration/deltaT or"
-        << " safety, or raise contact/stiffness" << nl
+        << ", strain " << sim_->time() << ", step " << steps(*sim_) << ") "
+        << (onDisk ? "is on disk, unchanged, in " : "is written to ")
+        << runTime_.timePath() << nl
+        << "    To continue from it, lower integration/deltaT or safety, or"
+        << " raise contact/stiffness, and run again" << nl
         << exit(FatalError);
 
     // FatalError has thrown (throwExceptions) or exited
@@ -310,8 +364,21 @@ void Foam::suspensionCloud::reportStart() const
     {
         Info<< " = " << outerSteps << " steps";
     }
-    Info<< nl
-        << "    threads      " << omp_get_max_threads() << nl << endl;
+    // The threads that run: small systems run on one (core/Parallel.H)
+    const label threads = omp_get_max_threads();
+    const std::size_t N = sim.particles().size();
+    Info<< nl << "    threads      ";
+    if (threads > 1 && !suspension::threaded(N))
+    {
+        Info<< "1 (N = " << label(N) << " is below the "
+            << label(suspension::parallelMinParticles()) << " particles of"
+            << " the threaded loops; OMP_NUM_THREADS allows " << threads << ")";
+    }
+    else
+    {
+        Info<< threads;
+    }
+    Info<< nl << endl;
 
     if (userDeltaT > limits.deltaT())
     {
@@ -415,7 +482,7 @@ Foam::suspensionCloud::suspensionCloud
     runTime_(runTime),
     mesh_(mesh),
     properties_(mesh),
-    restart_(suspensionIO::found(runTime)),
+    restart_(startsFromStored(runTime)),
     start_(initialState()),
     flow_
     (
@@ -428,6 +495,7 @@ Foam::suspensionCloud::suspensionCloud
     lastGood_(),
     lastGoodTime_(runTime.value()),
     lastGoodIndex_(runTime.timeIndex()),
+    writtenIndex_(runTime.timeIndex()),
     meanDeltaT_(0),
     written_(false),
     S_(),
@@ -440,6 +508,7 @@ Foam::suspensionCloud::suspensionCloud
 {
     const suspensionPopulation& population = properties_.population();
     const scalar rho = properties_.simulationParams().rho;
+    const suspension::NonStopArithmetic nonStop;
 
     // Everything is checked before the (possibly long) packing
     suspension::Particles particles;
@@ -518,8 +587,19 @@ Foam::suspensionCloud::particleStresslets() const
     if (SIndex_ != runTime_.timeIndex())
     {
         // Evaluating the stresslets changes no state of the engine
-        // (Simulation::particleStresslets)
-        const_cast<suspension::Simulation&>(*sim_).particleStresslets(S_);
+        // (Simulation::particleStresslets); the state passed its checks
+        try
+        {
+            const suspension::NonStopArithmetic nonStop;
+            const_cast<suspension::Simulation&>(*sim_).particleStresslets(S_);
+        }
+        catch (const std::exception& err)
+        {
+            FatalErrorInFunction
+                << "The particle stresslets of time " << runTime_.timeName()
+                << " cannot be evaluated: " << err.what() << nl
+                << exit(FatalError);
+        }
         SIndex_ = runTime_.timeIndex();
     }
     return S_;
@@ -543,20 +623,22 @@ void Foam::suspensionCloud::evolve()
     // The state (and the order of the particles) changes
     SIndex_ = -1;
 
-    if (written_)
-    {
-        start(sim_->time(), true);
-        written_ = false;
-    }
-
+    // Whatever the engine throws (its SimulationError, or anything else
+    // thrown in a step) ends the run with the last good state on disk
     const std::uint64_t before = sim_->steps();
     try
     {
+        const suspension::NonStopArithmetic nonStop;
+        if (written_)
+        {
+            sim_->start(sim_->time(), true);
+            written_ = false;
+        }
         sim_->advance(runTime_.deltaTValue());
     }
-    catch (const suspension::SimulationError& err)
+    catch (const std::exception& err)
     {
-        failed(err);
+        failed(err.what());
     }
     meanDeltaT_ = runTime_.deltaTValue()/(sim_->steps() - before);
 
@@ -565,6 +647,17 @@ void Foam::suspensionCloud::evolve()
     lastGoodIndex_ = runTime_.timeIndex();
 
     reportProgress();
+}
+
+
+void Foam::suspensionCloud::writeLastState()
+{
+    if (writtenIndex_ != runTime_.timeIndex())
+    {
+        Info<< "Writing the last state (time " << runTime_.timeName()
+            << ", not a write time)" << nl << endl;
+        runTime_.writeNow();
+    }
 }
 
 

@@ -8,8 +8,20 @@
 #include "cloud.H"
 #include "treeDataCell.H"
 #include "indexedOctree.H"
+#include "OFstream.H"
+#include "IFstream.H"
+#include "OStringStream.H"
+#include "SHA1.H"
+#include "core/Parallel.H"
+
+#include <fcntl.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <functional>
 #include <unordered_map>
 #include <utility>
 
@@ -152,24 +164,243 @@ vectorField toFoamField(const std::vector<Vec3>& v)
 }
 
 
-template<class Type>
-void writeField(const IOobject& io, const Field<Type>& values)
+//- Why the last system call failed
+std::string systemError()
 {
-    IOField<Type>(io, values).write();
+    return errno ? std::strerror(errno) : "unknown error";
 }
 
 
-//- Write a dictionary as ascii with full precision
-void writeAscii(const IOdictionary& dict)
+//- Write io to the file `path` (its objectPath() unless given) as
+//  regIOobject::writeObject does, but flushed and checked before the
+//  stream closes: a short write (a full disk, a file size limit) is a
+//  FatalError naming the file
+void writeChecked
+(
+    const regIOobject& io,
+    const IOstream::streamFormat fmt,
+    const IOstream::compressionType cmp,
+    const fileName& path = fileName::null
+)
+{
+    const fileName file = path.empty() ? io.objectPath() : path;
+    mkDir(file.path());
+    errno = 0;
+    bool ok;
+    {
+        OFstream os(file, fmt, IOstream::currentVersion, cmp);
+        ok = os.good() && io.writeHeader(os) && io.writeData(os);
+        if (ok)
+        {
+            IOobject::writeEndDivider(os);
+            os.flush();
+            ok = os.good();
+        }
+    }
+    if (!ok)
+    {
+        FatalErrorInFunction
+            << "Cannot write " << file << ": " << systemError().c_str()
+            << nl << "    A time whose write fails has no uniform/"
+            << suspensionIO::stateName << ": a restart does not take it, and"
+            << " the earlier times are intact" << nl << exit(FatalError);
+    }
+}
+
+
+template<class Type>
+void writeField(const IOobject& io, const Field<Type>& values)
+{
+    const Time& runTime = io.time();
+    writeChecked
+    (
+        IOField<Type>(io, values),
+        runTime.writeFormat(),
+        runTime.writeCompression()
+    );
+}
+
+
+//- Write a dictionary as ascii with full precision to `path` (its own
+//  objectPath() unless given)
+void writeAscii(const IOdictionary& dict, const fileName& path = fileName::null)
 {
     const fullPrecision precision;
-    dict.regIOobject::writeObject
-    (
-        IOstream::ASCII,
-        IOstream::currentVersion,
-        IOstream::UNCOMPRESSED,
-        true
-    );
+    writeChecked(dict, IOstream::ASCII, IOstream::UNCOMPRESSED, path);
+}
+
+
+// The commit of a time (suspensionIO.H): its files, their digests, the state
+
+//- Flush a file or folder to disk (fsync); with all, every file of its
+//  file system (syncfs: one flush for the many files of a time)
+void syncToDisk(const fileName& path, const bool all = false)
+{
+    const int fd = ::open(path.c_str(), O_RDONLY);
+    const bool ok = fd >= 0 && (all ? ::syncfs(fd) : ::fsync(fd)) == 0;
+    if (fd >= 0)
+    {
+        ::close(fd);
+    }
+    if (!ok)
+    {
+        FatalErrorInFunction
+            << "Cannot flush " << path << " to disk: "
+            << systemError().c_str() << nl << exit(FatalError);
+    }
+}
+
+
+//- SHA-1 digest of a file's bytes, as 40 hex digits
+word digestOf(const fileName& path)
+{
+    std::ifstream is(path, std::ios::binary);
+    SHA1 sha;
+    std::vector<char> buf(1 << 20);
+    while (is)
+    {
+        is.read(buf.data(), buf.size());
+        sha.append(buf.data(), size_t(is.gcount()));
+    }
+    return sha.digest().str();
+}
+
+
+//- Whether an uncompressed OpenFOAM file ends with the end divider that
+//  IOobject::writeEndDivider writes after the data (ascii and binary)
+bool endsWithDivider(const fileName& path)
+{
+    OStringStream os;
+    IOobject::writeEndDivider(os);
+    const std::string divider = os.str().substr(2);   // after its "\n\n"
+    std::ifstream is(path, std::ios::binary);
+    is.seekg(0, std::ios::end);
+    const std::streamoff size = is.tellg();
+    if (size < std::streamoff(divider.size()))
+    {
+        return false;
+    }
+    std::string tail(divider.size(), ' ');
+    is.seekg(size - std::streamoff(divider.size()));
+    is.read(&tail[0], tail.size());
+    return bool(is) && tail == divider;
+}
+
+
+//- The files of timeDir, relative to it, that its state lists: those of
+//  uniform (OpenFOAM's time; not the state itself or its temporary), of
+//  the cloud and the contact history, and of the cloud's properties
+fileNameList committedFiles(const fileName& timeDir)
+{
+    const fileName folders[] =
+    {
+        "uniform",
+        cloud::prefix/suspensionIO::cloudName,
+        cloud::prefix/suspensionIO::contactsName,
+        "uniform"/cloud::prefix/suspensionIO::cloudName
+    };
+    DynamicList<fileName> files;
+    for (const fileName& folder : folders)
+    {
+        fileNameList names = readDir(timeDir/folder, fileName::FILE, false);
+        sort(names);
+        for (const fileName& name : names)
+        {
+            if (folder == "uniform" && name.find(suspensionIO::stateName) == 0)
+            {
+                continue;
+            }
+            files.append(folder/name);
+        }
+    }
+    return fileNameList(std::move(files));
+}
+
+
+//- The sub-dictionary of `files` for the folder of `rel`, added if new
+dictionary& folderDict(dictionary& files, const fileName& rel)
+{
+    dictionary* d = &files;
+    const wordList parts(rel.path().components());
+    for (const word& part : parts)
+    {
+        d = &d->subDictOrAdd(part);
+    }
+    return *d;
+}
+
+
+//- Each file of `files` (nested as the folders) with its relative path
+void forEachListed
+(
+    const dictionary& files,
+    const fileName& folder,
+    const std::function<void(const fileName&, const dictionary&)>& f
+)
+{
+    for (const entry& e : files)
+    {
+        if (!e.isDict())
+        {
+            continue;
+        }
+        const fileName rel = folder.empty() ? fileName(e.keyword()) : folder/e.keyword();
+        if (e.dict().found("sha1"))
+        {
+            f(rel, e.dict());
+        }
+        else
+        {
+            forEachListed(e.dict(), rel, f);
+        }
+    }
+}
+
+
+//- The files a state written before the digests needs
+bool legacyFilesFound(const fileName& timeDir, string& missing)
+{
+    const fileName cloudDir = timeDir/cloud::prefix/suspensionIO::cloudName;
+    const fileName contactDir = timeDir/cloud::prefix/suspensionIO::contactsName;
+    for (const char* f : {"x", "d", "U", "omega", "F", "T", "origId"})
+    {
+        if (!isFile(cloudDir/f))
+        {
+            missing = cloudDir/f;
+            return false;
+        }
+    }
+    for (const char* f : {"idI", "idJ", "xiT", "xiR"})
+    {
+        if (!isFile(contactDir/f))
+        {
+            missing = contactDir/f;
+            return false;
+        }
+    }
+    return true;
+}
+
+
+//- Whether timeDir holds any part of a suspension
+bool holdsSuspension(const fileName& timeDir)
+{
+    return
+        isFile(timeDir/"uniform"/suspensionIO::stateName)
+     || isDir(timeDir/cloud::prefix/suspensionIO::cloudName)
+     || isDir(timeDir/cloud::prefix/suspensionIO::contactsName);
+}
+
+
+//- A free name for setting timeDir aside: <time>.incomplete[.k]
+fileName asideName(const fileName& timeDir)
+{
+    fileName aside = timeDir + ".incomplete";
+    for (label k = 2; exists(aside, false, false); ++k)
+    {
+        aside = timeDir + ".incomplete." + Foam::name(k);
+    }
+    return aside;
 }
 
 } // End anonymous namespace
@@ -177,23 +408,241 @@ void writeAscii(const IOdictionary& dict)
 
 // * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
 
+Foam::suspensionIO::stored Foam::suspensionIO::check(const fileName& timeDir)
+{
+    if (!holdsSuspension(timeDir))
+    {
+        return {stored::absent, ""};
+    }
+    const fileName stateFile = timeDir/"uniform"/stateName;
+    if (!isFile(stateFile, false))
+    {
+        return
+        {
+            stored::incomplete,
+            "no uniform/" + stateName + ", the file written last"
+        };
+    }
+
+    // A state edited by hand may not parse: say so instead of stopping
+    dictionary state;
+    {
+        const bool throwing = FatalIOError.throwExceptions();
+        const bool throwingFatal = FatalError.throwExceptions();
+        try
+        {
+            const suspension::NonStopArithmetic nonStop;
+            IFstream is(stateFile);
+            state.read(is);
+        }
+        catch (const Foam::error& err)
+        {
+            state.clear();
+            state.add("unreadable", err.message());
+        }
+        FatalIOError.throwExceptions(throwing);
+        FatalError.throwExceptions(throwingFatal);
+    }
+    if (state.found("unreadable"))
+    {
+        return
+        {
+            stored::incomplete,
+            "uniform/" + stateName + " cannot be read: "
+          + state.get<string>("unreadable")
+        };
+    }
+
+    const dictionary* files = state.findDict("files");
+    if (!files)
+    {
+        string missing;
+        if (!legacyFilesFound(timeDir, missing))
+        {
+            return {stored::incomplete, "no " + missing};
+        }
+        return
+        {
+            stored::complete,
+            "written before the files' digests: not verified"
+        };
+    }
+
+    // Each file as listed; named from the case, <time>/<folder>/<file>
+    string reason;
+    forEachListed
+    (
+        *files, fileName::null,
+        [&](const fileName& rel, const dictionary& listed)
+        {
+            if (!reason.empty())
+            {
+                return;
+            }
+            const fileName path = timeDir/rel;
+            const fileName name = timeDir.name()/rel;
+            if (!isFile(path, false))
+            {
+                reason = name + " is missing";
+                return;
+            }
+            const off_t size = fileSize(path);
+            const label listedSize = listed.get<label>("size");
+            if (size != off_t(listedSize))
+            {
+                reason =
+                    name + " holds " + Foam::name(label(size)) + " bytes, the"
+                    " state lists " + Foam::name(listedSize);
+            }
+            else if (digestOf(path) != listed.get<string>("sha1"))
+            {
+                reason = name + " does not match the SHA-1 digest of the state";
+            }
+        }
+    );
+    if (!reason.empty())
+    {
+        return {stored::incomplete, reason};
+    }
+    return {stored::complete, ""};
+}
+
+
 bool Foam::suspensionIO::found(const Time& runTime)
 {
-    return
-        isFile(runTime.timePath()/"uniform"/stateName)
-     || isDir(runTime.timePath()/cloud::prefix/cloudName);
+    return holdsSuspension(runTime.timePath());
+}
+
+
+void Foam::suspensionIO::selectStartTime(const argList& args)
+{
+    const fileName casePath = args.path();
+    const fileName controlFile = casePath/"system"/"controlDict";
+    if (!isFile(controlFile))
+    {
+        return;     // Time says what is missing
+    }
+
+    // A number too large for a double is an IOerror naming its entry, not
+    // a floating-point trap in the parser
+    const dictionary control = [&]()
+    {
+        const suspension::NonStopArithmetic nonStop;
+        IFstream is(controlFile);
+        return dictionary(is);
+    }();
+    const word startFrom =
+        control.getOrDefault<word>("startFrom", "latestTime");
+
+    const instantList times = Time::findTimes(casePath, "constant");
+    const auto dirOf = [&](const label i) { return casePath/times[i].name(); };
+
+    // The latest complete time at or before time i (-1: none); check()
+    // reads every file of the times it passes
+    const auto latestComplete = [&](label i)
+    {
+        while (i >= 0 && check(dirOf(i)).state != stored::complete)
+        {
+            --i;
+        }
+        return i;
+    };
+
+    if (startFrom == "latestTime")
+    {
+        const label latest = latestComplete(times.size() - 1);
+        if (latest < 0)
+        {
+            return;     // the cloud says what the start time holds
+        }
+        for (label i = times.size() - 1; i > latest; --i)
+        {
+            const fileName dir = dirOf(i);
+            stored s = check(dir);
+            if (s.state == stored::absent)
+            {
+                // OpenFOAM writes uniform/time first: a write stopped
+                // before the cloud
+                if (!isFile(dir/"uniform"/"time"))
+                {
+                    FatalErrorInFunction
+                        << "The latest time " << times[i].name() << " holds"
+                        << " no suspension, while " << times[latest].name()
+                        << " holds a complete one: remove " << dir
+                        << ", or start from a time of your choice (startFrom"
+                        << " startTime in " << controlFile << ")" << nl
+                        << exit(FatalError);
+                }
+                s.reason = "uniform/time but no suspension";
+            }
+            const fileName aside = asideName(dir);
+            if (!mv(dir, aside))
+            {
+                FatalErrorInFunction
+                    << "Time " << times[i].name() << " is incomplete ("
+                    << s.reason.c_str() << ") and cannot be moved aside to "
+                    << aside << ": " << systemError().c_str() << nl
+                    << exit(FatalError);
+            }
+            Info<< "Time " << times[i].name() << " is incomplete ("
+                << s.reason.c_str() << "): moved to " << aside.name()
+                << " (nothing deleted); starting from "
+                << times[latest].name() << ", the latest complete time"
+                << nl << endl;
+        }
+        return;
+    }
+
+    // startTime or firstTime: the time Time will take
+    label start = -1;
+    if (startFrom == "startTime")
+    {
+        const scalar t = control.get<scalar>("startTime");
+        forAll(times, i)
+        {
+            if (times[i].equal(t))
+            {
+                start = i;
+            }
+        }
+    }
+    else if (startFrom == "firstTime")
+    {
+        start = times.size() > 1 && times[0].name() == "constant" ? 1 : 0;
+    }
+    if (start < 0 || start >= times.size())
+    {
+        return;
+    }
+    const stored s = check(dirOf(start));
+    if (s.state == stored::incomplete)
+    {
+        const label latest = latestComplete(times.size() - 1);
+        FatalIOErrorInFunction(control)
+            << "startFrom " << startFrom << " starts from time "
+            << times[start].name() << ", which holds an incomplete"
+            << " suspension (" << s.reason.c_str() << "); "
+            << (latest < 0 ? "no time" : "time " + times[latest].name()).c_str()
+            << " holds a complete one" << nl
+            << "    Start from a complete time (startTime), or set startFrom"
+            << " latestTime, which sets the incomplete latest times aside"
+            << nl << exit(FatalIOError);
+    }
 }
 
 
 Foam::suspensionIO::state Foam::suspensionIO::readState(const Time& runTime)
 {
+    // A number too large for a double: an error naming it, not a trap
+    const suspension::NonStopArithmetic nonStop;
     const IOdictionary dict
     (
         timeFile(runTime, "uniform", stateName, IOobject::MUST_READ)
     );
     checkEntries
     (
-        dict, {"time", "steps", "nParticles", "nContacts", "box", "offset"}
+        dict,
+        {"time", "steps", "nParticles", "nContacts", "box", "offset", "files"}
     );
 
     state s;
@@ -244,6 +693,27 @@ suspension::Particles Foam::suspensionIO::readParticles
     const vectorField dUdt(readFieldOrZero<vector>(read("dUdt"), n, s));
     const vectorField dOmegadt(readFieldOrZero<vector>(read("dOmegadt"), n, s));
     const labelField id(readField<label>(read("origId"), n, s));
+
+    // Every value finite (a state written by hand, or corrupted)
+    const auto checkFinite = [&](const word& name, const vectorField& f)
+    {
+        forAll(f, i)
+        {
+            if (!std::isfinite(f[i].x()) || !std::isfinite(f[i].y()) || !std::isfinite(f[i].z()))
+            {
+                FatalIOErrorInFunction(read(name).objectPath())
+                    << "Particle " << i << " (origId " << id[i] << ") has "
+                    << name << " = " << f[i] << "; the values of a stored"
+                    << " suspension must be finite" << nl << exit(FatalIOError);
+            }
+        }
+    };
+    checkFinite("U", U);
+    checkFinite("omega", omega);
+    checkFinite("F", F);
+    checkFinite("T", T);
+    checkFinite("dUdt", dUdt);
+    checkFinite("dOmegadt", dOmegadt);
 
     suspension::Particles p;
     forAll(x, i)
@@ -336,6 +806,18 @@ suspension::PairList Foam::suspensionIO::readContacts
     {
         pairs[k] = {indexOf(idI[k], k), indexOf(idJ[k], k)};
         keys[k] = {min(idI[k], idJ[k]), max(idI[k], idJ[k])};
+        const vector stretch[2] = {xiT[k], xiR[k]};
+        for (const vector& v : stretch)
+        {
+            if (!std::isfinite(v.x()) || !std::isfinite(v.y()) || !std::isfinite(v.z()))
+            {
+                FatalIOErrorInFunction(read("xiT").objectPath())
+                    << "Contact " << k << " of particles " << idI[k] << " and "
+                    << idJ[k] << " has the stretches " << xiT[k] << ", "
+                    << xiR[k] << "; they must be finite" << nl
+                    << exit(FatalIOError);
+            }
+        }
         if (idI[k] == idJ[k])
         {
             FatalIOErrorInFunction(read("idJ").objectPath())
@@ -431,6 +913,16 @@ void Foam::suspensionIO::write
 {
     const fullPrecision precision;
     const suspension::Particles& p = sim.particles();
+    const fileName timeDir = mesh.time().timePath();
+    const fileName stateFile = timeDir/"uniform"/stateName;
+
+    // A time written before (by an earlier run) is no longer complete
+    if (isFile(stateFile, false) && !rm(stateFile))
+    {
+        FatalErrorInFunction
+            << "Cannot remove " << stateFile << " before writing the time"
+            << " anew: " << systemError().c_str() << nl << exit(FatalError);
+    }
 
     // The cloud: positions (for ParaView), coordinates, origId
     passiveParticleCloud cloud(mesh, cloudName, IDLList<passiveParticle>());
@@ -513,7 +1005,42 @@ void Foam::suspensionIO::write
     dict.add("nContacts", idI.size());
     dict.add("box", toFoam(sim.box().L()));
     dict.add("offset", sim.box().offset());
-    writeAscii(dict);
+
+    // The files of the time, whole and on disk, with their digests
+    dictionary files;
+    for (const fileName& rel : committedFiles(timeDir))
+    {
+        const fileName path = timeDir/rel;
+        if (!path.hasExt("gz") && !endsWithDivider(path))
+        {
+            FatalErrorInFunction
+                << "The file " << path << " was not written whole (it does"
+                << " not end with OpenFOAM's end divider): is the disk full?"
+                << nl << "    The time " << mesh.time().timeName() << " is"
+                << " left without its " << stateName << ", so a restart does"
+                << " not take it; the earlier times are intact" << nl
+                << exit(FatalError);
+        }
+        dictionary listed;
+        listed.add("size", label(fileSize(path)));
+        listed.add("sha1", string(digestOf(path)));
+        folderDict(files, rel).add(rel.name(), listed);
+    }
+    dict.add("files", files);
+    syncToDisk(timeDir, true);
+
+    // The commit: the state under a temporary name, on disk, renamed
+    const fileName tmp = stateFile + ".tmp";
+    writeAscii(dict, tmp);
+    syncToDisk(tmp);
+    if (::rename(tmp.c_str(), stateFile.c_str()) != 0)
+    {
+        FatalErrorInFunction
+            << "Cannot rename " << tmp << " to " << stateFile << ": "
+            << systemError().c_str() << nl << exit(FatalError);
+    }
+    syncToDisk(stateFile.path());
+    syncToDisk(timeDir);
 }
 
 

@@ -1,8 +1,16 @@
 #include "suspensionProperties.H"
+#include "core/Parallel.H"
 #include "forceModelsReader.H"
 #include "inputChecks.H"
 #include "Enum.H"
 #include "Time.H"
+
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <fstream>
+#include <string>
+#include <utility>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -148,6 +156,63 @@ void rejectOutputDict(const dictionary& dict)
     }
 }
 
+//- Bytes of engine state per particle, at least: every case measured
+//  needs more (docs/performance.md, "Memory")
+constexpr double bytesPerParticle = 1024;
+
+
+//- The memory this process may use, in bytes, and what sets it: the
+//  physical memory, a control group's limit, or the address-space limit
+std::pair<double, std::string> memoryLimit()
+{
+    std::pair<double, std::string> limit
+    {
+        double(::sysconf(_SC_PHYS_PAGES))*double(::sysconf(_SC_PAGESIZE)),
+        "physical memory"
+    };
+    std::ifstream cgroup("/sys/fs/cgroup/memory.max");
+    double bytes;
+    if (cgroup >> bytes && bytes < limit.first)
+    {
+        limit = {bytes, "memory limit of its control group"};
+    }
+    struct rlimit as;
+    if
+    (
+        ::getrlimit(RLIMIT_AS, &as) == 0 && as.rlim_cur != RLIM_INFINITY
+     && double(as.rlim_cur) < limit.first
+    )
+    {
+        limit = {double(as.rlim_cur), "address-space limit (ulimit -v)"};
+    }
+    return limit;
+}
+
+
+//- The file of the properties, read (MUST_READ) or to hold a dictionary
+IOobject propertiesFile(const objectRegistry& obr, const IOobject::readOption r)
+{
+    return IOobject
+    (
+        suspensionProperties::dictName,
+        obr.time().constant(),
+        obr,
+        r,
+        IOobject::NO_WRITE,
+        r == IOobject::MUST_READ ? false : true
+    );
+}
+
+
+//- The contents of the file, parsed without floating-point traps: a number
+//  too large for a double (1e999) is then an IOerror that names the file,
+//  the entry and the line (suspension::NonStopArithmetic)
+dictionary readWithoutTraps(const objectRegistry& obr)
+{
+    const suspension::NonStopArithmetic nonStop;
+    return IOdictionary(propertiesFile(obr, IOobject::MUST_READ));
+}
+
 } // End anonymous namespace
 
 
@@ -157,14 +222,8 @@ Foam::suspensionProperties::suspensionProperties(const objectRegistry& obr)
 :
     IOdictionary
     (
-        IOobject
-        (
-            dictName,
-            obr.time().constant(),
-            obr,
-            IOobject::MUST_READ,
-            IOobject::NO_WRITE
-        )
+        propertiesFile(obr, IOobject::NO_READ),
+        readWithoutTraps(obr)
     ),
     units_(*this),
     population_(subDict("population"), units_.lengthUnit()),
@@ -188,6 +247,20 @@ Foam::suspensionProperties::suspensionProperties(const objectRegistry& obr)
             "ambientFlow"
         }
     );
+
+    // A case larger than the machine stops here, not after the packing
+    const double needed = bytesPerParticle*population_.nParticles();
+    const std::pair<double, std::string> limit = memoryLimit();
+    if (needed > limit.first)
+    {
+        FatalIOErrorInFunction(population_.dict())
+            << "Entry 'nParticles' = " << population_.nParticles() << " in "
+            << population_.dict().name() << ": the suspension needs at least "
+            << needed/1e9 << " GB (" << bytesPerParticle/1024 << " kB of"
+            << " engine state per particle, a lower bound), and this machine"
+            << " has " << limit.first/1e9 << " GB (its "
+            << limit.second.c_str() << ")" << nl << exit(FatalIOError);
+    }
 }
 
 
