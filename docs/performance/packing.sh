@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 #------------------------------------------------------------------------------
-# Time the random packing of makeSuspension (README, "Initial packings"):
+# Time the random packing of makeSuspension (docs/user-guide.md, "Population"):
 # the Table 1 mixture (a2/a1 = 1.4, V2/V1 = 1) at phi = 0.60 with N = 200
 # and 1000, the Table 3 mixture (a2/a1 = 3, V2/V1 = 0.25) at phi = 0.55 with
 # N = 4096 and at phi = 0.5 with N = 65536, one thread, REPEATS runs each

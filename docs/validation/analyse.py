@@ -6,7 +6,7 @@
 Every number is the solver's own: for each run (seed) the latest
 postProcessing/rheology/*/rheologySummary.dat that the function object
 suspensionRheology writes (start-up transient by the MSER-5 rule, blocks of
-two correlation strains; README "The rheology with an error bar"). A point's
+two correlation strains; docs/user-guide.md, "The rheology with an error bar"). A point's
 value is the mean over its seeds (initial configurations) weighted by their
 errors, its error bar that of the weighted mean, scaled up when the seeds
 scatter more than their error bars say (rheologydata.combineSeeds). Writes

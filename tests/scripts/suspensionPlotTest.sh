@@ -3,7 +3,13 @@
 # suspensionPlot on the function-object output of tests/suspensionFoam/
 # reference, its folders renamed as a user's controlDict may name them: both
 # PNGs are written (valid PNG headers, not empty), a time given as 0.0020
-# finds folder 0.002, and a time without profiles is an error.
+# finds folder 0.002, and a time without profiles is an error. The marks of
+# the steady state on rheology.png: without a rheologySummary.dat the plot
+# is written unmarked and the log says so; with one (written here in the
+# layout of suspensionRheology) the start-up and the mean of etaR with its
+# error bar are marked and reported, a mean without an error bar too; of a
+# restarted run the summary of the latest start time is used; a summary
+# that cannot be read is an error naming it (no traceback).
 #   suspensionPlotTest.sh <projectDir>
 #------------------------------------------------------------------------------
 set -euo pipefail
@@ -18,6 +24,8 @@ mv "$work/postProcessing/rheology" "$work/postProcessing/myRheology"
 mv "$work/postProcessing/profiles" "$work/postProcessing/yProfiles"
 
 "$plot" -case "$work" -time 0.0020 > "$work/log" 2>&1 || { cat "$work/log"; fail "suspensionPlot"; }
+cp "$work/log" "$work/log.plain"
+cp "$work/postProcessing/plots/rheology.png" "$work/rheology.plain.png"
 for png in rheology profiles; do
     f=$work/postProcessing/plots/$png.png
     grep -q "wrote $f" "$work/log" || fail "$png.png not reported"
@@ -29,4 +37,53 @@ if "$plot" -case "$work" -time 3 > "$work/log" 2>&1; then
     fail "no error for a time without profiles"
 fi
 grep -q "no profiles at time 3 (have: 0 0.002 0.004)" "$work/log" || fail "the error does not list the times"
-echo "suspensionPlot: both plots of renamed function-object folders"
+
+# No summary: unmarked, and said
+grep -q "no rheologySummary.dat in .*myRheology yet" "$work/log.plain" 2>/dev/null \
+    || fail "a missing summary is not reported"
+[ -s "$work/rheology.plain.png" ] || fail "no rheology.png without a summary"
+
+# summary <file> <stdError> <trusted>: a rheologySummary.dat of the layout of
+# suspensionRheology for the reference run (strain 0.001 to 0.004)
+summary()
+{
+    cat > "$1" <<SUMMARY
+# Steady-state rheology at time 0.004 (strain 0.004), from 4 rows of postProcessing/myRheology/*/rheology*.dat
+# start-up transient: MSER-5 rule on etaR, strain 0.001 to 0.002 discarded (strainDiscarded adds, for each quantity, the oldest samples that do not fill a block)
+# error bars: means of blocks of two correlation strains, trusted with >= 8 blocks over >= 1 strain
+# etaR = 2.33 +/- $2 (0.43 %, 2 blocks of 0.001 strain): too few blocks to trust; for the precision 2 % about 0.5 more steady strain is needed
+# quantity                    mean      stdError  relError correlationStrain blockStrain  blocks  strainUsed strainDiscarded  trusted
+  etaR                        2.33          $2     0.0043            0.0005       0.001       2       0.002           0.002       $3
+  N1                         -0.21          0.01     0.048            0.0005       0.001       2       0.002           0.002       no
+SUMMARY
+}
+rheo=$work/postProcessing/myRheology
+summary "$rheo/0/rheologySummary.dat" 0.01 no
+"$plot" -case "$work" > "$work/log" 2>&1 || { cat "$work/log"; fail "suspensionPlot with a summary"; }
+grep -q "marked etaR = 2.33 +/- 0.01 over strain 0.002 to 0.004, not trusted, from $rheo/0/rheologySummary.dat" \
+    "$work/log" || { cat "$work/log"; fail "the steady state is not marked as the summary says"; }
+cmp -s "$work/rheology.plain.png" "$work/postProcessing/plots/rheology.png" \
+    && fail "rheology.png with a summary is the plot without one"
+
+# A mean without an error bar (too few blocks: nan)
+summary "$rheo/0/rheologySummary.dat" nan no
+"$plot" -case "$work" > "$work/log" 2>&1 || { cat "$work/log"; fail "suspensionPlot with a nan error bar"; }
+grep -q "marked etaR = 2.33 +/- nan" "$work/log" || fail "a mean without an error bar is not marked"
+
+# A restart at 0.002: its summary (the whole run) is the one marked
+mkdir "$rheo/0.002"
+{ sed -n '1,2p;5,$p' "$rheo/0/rheology.dat"; } > "$rheo/0.002/rheology.dat"
+summary "$rheo/0.002/rheologySummary.dat" 0.02 yes
+"$plot" -case "$work" > "$work/log" 2>&1 || { cat "$work/log"; fail "suspensionPlot of a restarted run"; }
+grep -q "marked etaR = 2.33 +/- 0.02 over strain 0.002 to 0.004, trusted, from $rheo/0.002/rheologySummary.dat" \
+    "$work/log" || { cat "$work/log"; fail "not the summary of the latest start time"; }
+
+# A summary that is not one: an error naming it, no traceback
+echo "# not a summary" > "$rheo/0.002/rheologySummary.dat"
+if "$plot" -case "$work" > "$work/log" 2>&1; then
+    fail "no error for an unreadable summary"
+fi
+grep -q "cannot read $rheo/0.002/rheologySummary.dat" "$work/log" || { cat "$work/log"; fail "the error does not name the summary"; }
+grep -q Traceback "$work/log" && fail "a traceback instead of an error"
+
+echo "suspensionPlot: both plots of renamed function-object folders, the steady state marked from rheologySummary.dat"

@@ -1,7 +1,8 @@
-// Pairwise lubrication (eq. 3, Appendix A): resistance scalars against the
-// verified table (shared/notes/resistance-functions.md), the Reynolds squeeze
-// limit, the worked numbers of section 5, and the exact identities of
-// section 6 (force balance, rigid-body motion, affine strain, relabelling).
+// Pairwise lubrication (eq. 3, Appendix A): resistance scalars against
+// values of Jeffrey & Onishi (1984) and Jeffrey (1992) evaluated
+// independently (forces/LubricationCoefficients.H), the Reynolds squeeze
+// limit, worked forces of a pair, and the exact identities (force balance,
+// rigid-body motion, affine strain, relabelling).
 #include "forces/Lubrication.H"
 
 #include <Eigen/Eigenvalues>
@@ -167,7 +168,7 @@ namespace
 
 TEST(LubricationCoefficients, TableValuesSection2c)
 {
-    // Note section 2c: coefficients of pi eta (1/xi) and pi eta L at a_1 = 1,
+    // The dimensional singular coefficients of pi eta (1/xi) and pi eta L at a_1 = 1,
     // printed to 6 decimals
     const double tol = 5e-7;
     const double eta = 1;
@@ -239,7 +240,7 @@ TEST(LubricationCoefficients, TableValuesSection2c)
 
 TEST(LubricationCoefficients, ClosedFormsSection2c)
 {
-    // The dimensional closed forms of section 2c in (a1, a2), against the
+    // The dimensional closed forms in (a1, a2), against the
     // code's lambda-series, for any radii and viscosity
     const double eta = 1.7;
     for (const double a1 : {1.0, 0.37})
@@ -310,7 +311,7 @@ TEST(LubricationCoefficients, ClosedFormsSection2c)
                 "YH"
             );
 
-            // xi L order of X^A (note section 2c example)
+            // xi L order of X^A
             const LubricationCoefficients xiLog(a1, a2, orderXiLog, eta);
             const double xa3 = u/7*
             (
@@ -326,7 +327,7 @@ TEST(LubricationCoefficients, ClosedFormsSection2c)
 TEST(LubricationCoefficients, XiLogOrderSection2a)
 {
     // Coefficients of pi eta xi L (extended mode) at a_1 = 1: the g3 (g5, g6)
-    // of note section 2a with the JO/J92 prefactors pi eta (a_a + a_b)^k and
+    // of JO 1984 (A) and J92 (G, H) with the JO/J92 prefactors pi eta (a_a + a_b)^k and
     // the JO rule f_22(lambda) = p f_11(1/lambda), evaluated independently
     // in exact rational arithmetic
     const double tol = 1e-11;
@@ -563,7 +564,7 @@ TEST(Lubrication, ReynoldsSqueezeUnequalSpheres)
 
 TEST(Lubrication, WorkedNumbersSection5)
 {
-    // |F_i| for a unit approach speed of j, eta = a_1 = 1 (note section 5):
+    // |F_i| for a unit approach speed of j, eta = a_1 = 1:
     // 1/xi term only; 1/xi + g2 L; 1/xi + g2 L + g3 xi L
     struct Case
     {
@@ -852,7 +853,7 @@ TEST(Lubrication, RigidBodyMotionInLinearFlowGivesNoForce)
     // motion, so no singular force or torque - although U'_a, Omega'_a and
     // the strain terms are all nonzero. Particles held at rest in a pure
     // strain (U0 = w = Omega_inf = 0) are a special case.
-    // The identities of note section 6 cancel the singular terms exactly for
+    // The rigid-body and affine-strain identities cancel the singular terms exactly for
     // the contact lever arm a_i + a_j, so the velocity fields are sampled at
     // x_j = x_i + (a_i + a_j) n; with the true centre distance a_i + a_j + h
     // a non-singular O(1) residual remains (the order the model drops).
@@ -904,7 +905,7 @@ TEST(Lubrication, AffineMotionEqualsRelativeTranslation)
 {
     // Spheres moving and spinning with the ambient flow (U' = Omega' = 0)
     // feel the strain terms only, and these equal the force of j translating
-    // past i at V = (a_i + a_j) E.n in a fluid at rest (note section 6); the
+    // past i at V = (a_i + a_j) E.n in a fluid at rest (affine-strain identity); the
     // normal part is the Reynolds squeeze at the normal speed n.V.
     std::mt19937 gen(6);
     const double eta = 0.8;

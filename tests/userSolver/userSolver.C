@@ -5,7 +5,8 @@ Application
 Description
     A user's own solver on the project's libraries, built with wmake from
     its own Make/files and Make/options (tests/userSolver/userSolverTest.sh
-    builds and runs it; README "Using the libraries in your own solver").
+    builds and runs it; docs/user-guide.md, "Your own solver or function
+    object").
     It selects an ambient flow from constant/suspensionProperties, prints it
     at the centre of the mesh, and evolves the suspension cloud in it.
 

@@ -36,8 +36,8 @@ namespace
 
 
     // One struct per function: k (power of length), c (c_k/(pi eta)),
-    // p (parity under relabelling), and the 11, 12 entries (g's of note
-    // section 2a). The JO/J92 12 entries carry the prefactor
+    // p (parity under relabelling), and the 11, 12 entries (the g's of
+    // JO 1984 for A, B, C and J92 for G, H). The JO/J92 12 entries carry the prefactor
     // pi eta (a_1 + a_2)^k and a form factor in (1 + lambda); both are
     // folded into `cross` here, using a_1 + a_2 = a_1 (1 + lambda).
     // "(A.7)" gives the paper's g (units of 6 pi eta, alpha = lambda), as
@@ -92,8 +92,8 @@ namespace
     //- Y^B: Y_11 = 4 pi eta a_1^2 (g2 L + g3 xi L);
     //  -(1 + lambda)^2/4 Y_12 = same series with prefactor
     //  pi eta (a_1 + a_2)^2, so Y_12 = -Y_11 (JO 5.6). Normalisation
-    //  4 pi eta a_1^2, not 8 (note section 1: rigid-rotation identity,
-    //  sphere-wall limit).
+    //  4 pi eta a_1^2, not 8 (the rigid-rotation identity and the
+    //  sphere-wall limit require it).
     //  (A.7): ii = -(2 a_i^2/15) alpha (4 + alpha)/(1 + alpha)^2,
     //         ij = (2 (a_i + a_j)^2/15) alpha (4 + alpha)/(1 + alpha)^4
     struct YBFunction
@@ -249,8 +249,8 @@ namespace
     };
 
 
-    //- The four dimensional entries of one function. Relabelling (note
-    //  section 2b): F_22(a_i, a_j) = p F_11(a_j, a_i),
+    //- The four dimensional entries of one function. Relabelling (JO
+    //  1984): F_22(a_i, a_j) = p F_11(a_j, a_i),
     //  F_21(a_i, a_j) = p F_12(a_j, a_i)
     template<class Function>
     Entries entries(const Radii& r, double eta, const Gap& s)
