@@ -48,8 +48,8 @@ TEST(ThreadGovernor, KeepsTwoThreadsWhereTheyAreFaster)
     ThreadGovernor g(2);
     const Steps r = run(g, 20000, [](int n) { return n == 2 ? 0.01 : 0.015; });
     EXPECT_EQ(g.inUse(), 2);
-    EXPECT_EQ(g.switches(), 0u);
-    // The probes of one thread: under 2 % of the steps
+    EXPECT_EQ(g.switches(), 1u);      // from the first window's one thread
+    // The first window and the probes of one thread: under 2 % of the steps
     EXPECT_LT(r.steps[1], 0.02*20000);
 }
 
@@ -63,7 +63,7 @@ TEST(ThreadGovernor, DropsToOneThreadWhereTwoAreSlower)
     const auto time = [](int n) { return n == 2 ? 0.33 : 0.01; };
     const Steps r = run(g, 20000, time);
     EXPECT_EQ(g.inUse(), 1);
-    EXPECT_EQ(g.switches(), 1u);
+    EXPECT_EQ(g.switches(), 0u);
     EXPECT_LT(r.seconds, 1.05*20000*0.01);
 }
 

@@ -17,9 +17,9 @@ ThreadGovernor::ThreadGovernor(int maxThreads, const Params& params)
 :
     params_(params),
     max_(maxThreads),
-    inUse_(maxThreads),
-    probe_(maxThreads),
-    direction_(-1),
+    inUse_(1),
+    probe_(1),
+    direction_(1),
     interval_(params.firstInterval),
     sinceProbe_(params.firstInterval - 1),
     reference_(0),
