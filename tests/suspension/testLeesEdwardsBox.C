@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
+#include <stdexcept>
 
 using namespace suspension;
 
@@ -69,6 +71,56 @@ TEST(LeesEdwardsBox, MinimumImageAcrossShearedBoundary)
 TEST(LeesEdwardsBox, RejectsNonPositiveLengths)
 {
     EXPECT_THROW(LeesEdwardsBox(Vec3(1, 0, 1), 1.0), std::invalid_argument);
+}
+
+
+TEST(LeesEdwardsBox, PositionThatCannotBeWrappedIsLeftAsItIs)
+{
+    // A NaN, an infinity or a coordinate 2^40 box lengths out cannot be
+    // wrapped: left as it is, u too, no crossing (no conversion of it to
+    // an integer: the sanitized build runs this). Just inside the bound
+    // the wrap still lands in the box with its crossings
+    LeesEdwardsBox box(Vec3(10, 8, 6), 1.0);
+    box.setTime(0.3);
+    const double NaN = std::numeric_limits<double>::quiet_NaN();
+    const double inf = std::numeric_limits<double>::infinity();
+    const double far = LeesEdwardsBox::maxWrapLengths;
+    auto same = [](const Vec3& a, const Vec3& b)    // NaN where NaN
+    {
+        return ((a.array() == b.array()) || (a.array().isNaN() && b.array().isNaN())).all();
+    };
+    for (const Vec3& x0 :
+        {Vec3(NaN, 1, 1), Vec3(1, NaN, 1), Vec3(1, 1, NaN), Vec3(-inf, 1, 1),
+         Vec3(1, inf, 1), Vec3(far*10, 1, 1), Vec3(1, -far*8, 1),
+         Vec3(1, 1, far*6), Vec3(1e300, 2e300, 1)})
+    {
+        EXPECT_FALSE(box.wrappable(x0)) << x0.transpose();
+        Vec3 x = x0;
+        Vec3 u(1, 2, 3);
+        EXPECT_EQ(box.wrap(x, u), 0) << x0.transpose();
+        EXPECT_TRUE(same(x, x0)) << x0.transpose() << " -> " << x.transpose();
+        EXPECT_EQ(u, Vec3(1, 2, 3)) << x0.transpose();
+    }
+
+    const Vec3 x0(0.5*far*10 + 3.0, -0.5*far*8 + 0.25, 0.5*far*6 + 1.0);
+    ASSERT_TRUE(box.wrappable(x0));
+    Vec3 x = x0;
+    Vec3 u(1, 2, 3);
+    EXPECT_EQ(box.wrap(x, u), -static_cast<long>(0.5*far));
+    EXPECT_TRUE(box.contains(x)) << x.transpose();
+    EXPECT_NEAR(u.x(), 1 + 0.5*far*8, 1e-3);
+}
+
+
+TEST(LeesEdwardsBox, OffsetThatCannotBeWrappedThrows)
+{
+    LeesEdwardsBox box(Vec3(10, 8, 6), 1.0);
+    EXPECT_THROW(box.setTime(std::numeric_limits<double>::quiet_NaN()), std::invalid_argument);
+    EXPECT_THROW(box.setTime(std::numeric_limits<double>::infinity()), std::invalid_argument);
+    EXPECT_THROW(box.setOffset(1e300), std::invalid_argument);
+    EXPECT_NO_THROW(box.setTime(1e6));
+    EXPECT_GE(box.offset(), 0);
+    EXPECT_LT(box.offset(), 10);
 }
 
 

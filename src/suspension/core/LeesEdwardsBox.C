@@ -9,7 +9,8 @@ namespace suspension
 
 namespace
 {
-    //- Largest integer <= x (|x| < 2^62), inlined
+    //- Largest integer <= x (|x| < 2^62: the callers keep x within
+    //  maxWrapLengths), inlined
     inline long floorInt(double x)
     {
         const long t = static_cast<long>(x);
@@ -29,6 +30,7 @@ LeesEdwardsBox::LeesEdwardsBox(const Vec3& L, double gammaDot)
 :
     L_(L),
     invL_(L.cwiseInverse()),
+    wrapLimit_(maxWrapLengths*L),
     gammaDot_(gammaDot),
     offset_(0)
 {
@@ -46,21 +48,35 @@ LeesEdwardsBox::LeesEdwardsBox(const Vec3& L, double gammaDot)
 
 void LeesEdwardsBox::setTime(double t)
 {
-    offset_ = periodic(gammaDot_*L_.y()*t, L_.x());
+    setOffset(gammaDot_*L_.y()*t);
 }
 
 
 void LeesEdwardsBox::setOffset(double delta)
 {
+    if (!(std::abs(delta) < wrapLimit_.x()))
+    {
+        throw std::invalid_argument
+        (
+            "LeesEdwardsBox: the offset " + std::to_string(delta)
+          + " of the image above cannot be wrapped (not finite, or 2^"
+          + std::to_string(std::ilogb(maxWrapLengths)) + " box lengths or"
+            " more): a non-finite or too large time"
+        );
+    }
     offset_ = periodic(delta, L_.x());
 }
 
 
-int LeesEdwardsBox::wrap(Vec3& x, Vec3& u) const
+long LeesEdwardsBox::wrap(Vec3& x, Vec3& u) const
 {
+    if (!wrappable(x))
+    {
+        return 0;
+    }
     // eq. (16a,b,d): leaving through the top re-enters at the bottom with
     // x - delta and u_x - gammaDot Ly, and vice versa
-    const int crossings = static_cast<int>(floorInt(x.y()/L_.y()));
+    const long crossings = floorInt(x.y()/L_.y());
     if (crossings != 0)
     {
         x.y() -= crossings*L_.y();

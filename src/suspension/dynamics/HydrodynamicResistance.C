@@ -1,6 +1,12 @@
 #include "dynamics/HydrodynamicResistance.H"
+#include "dynamics/SimulationError.H"
 
 #include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <sstream>
+#include <string>
 
 namespace suspension
 {
@@ -358,6 +364,104 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
 }
 
 
+HydrodynamicResistance::Block HydrodynamicResistance::diagonalBlock
+(
+    const Particles& p,
+    std::size_t i,
+    double dt,
+    double invDt
+) const
+{
+    const double eta = drag_.params().eta;
+    const double a = p.a[i];
+    const double m = invDt*p.m[i];
+    const double I = invDt*p.I[i];
+
+    // R: the Stokes drag (A.1) and the self blocks of R_Lub
+    Block R = Block::Zero();
+    R.diagonal() << Vec3::Constant(6*pi*eta*a), Vec3::Constant(8*pi*eta*a*a*a);
+    for (std::uint32_t s = index_.offset[i]; s < index_.offset[i + 1]; ++s)
+    {
+        const Pair& q = pairs_[s];
+        R += selfBlock(q.n, q.XA.ii, q.YA.ii, q.YB.ii, q.YC.ii);
+    }
+    for (std::uint32_t k = index_.offsetT[i]; k < index_.offsetT[i + 1]; ++k)
+    {
+        const Pair& q = pairs_[index_.slotT[k]];
+        R += selfBlock(q.n, q.XA.jj, q.YA.jj, q.YB.jj, q.YC.jj);
+    }
+
+    // K and Gamma: the springs and dashpots of its contacts
+    Block K = Block::Zero();
+    Block G = Block::Zero();
+    auto add = [&](const Contact& c, double side, double radius)
+    {
+        const ContactStiffness& k = c.k;
+        K += contactSelfBlock(c.n, side, radius, c.aij, k.kn, k.kt, k.kr);
+        G.topLeftCorner<3, 3>() += k.gammaN*outer(c.n, c.n);
+    };
+    for (std::uint32_t s = contactIndex_.offset[i]; s < contactIndex_.offset[i + 1]; ++s)
+    {
+        add(contacts_[s], -1, contacts_[s].ai);
+    }
+    for (std::uint32_t t = contactIndex_.offsetT[i]; t < contactIndex_.offsetT[i + 1]; ++t)
+    {
+        const Contact& c = contacts_[contactIndex_.slotT[t]];
+        add(c, 1, c.aj);
+    }
+
+    Block A = R + dt*K + G;
+    A.diagonal() += (Vec6() << Vec3::Constant(m), Vec3::Constant(I)).finished();
+    return A;
+}
+
+
+std::string HydrodynamicResistance::blockFailure
+(
+    const Particles& p,
+    std::size_t i,
+    double dt,
+    double invDt
+) const
+{
+    const Block A = diagonalBlock(p, i, dt, invDt);
+    const std::size_t nPairs =
+        index_.offset[i + 1] - index_.offset[i]
+      + index_.offsetT[i + 1] - index_.offsetT[i];
+    const std::size_t nContacts =
+        contactIndex_.offset[i + 1] - contactIndex_.offset[i]
+      + contactIndex_.offsetT[i + 1] - contactIndex_.offsetT[i];
+
+    std::ostringstream msg;
+    msg << "the diagonal block of the implicit velocity operator of particle "
+        << p.id[i];
+    if (!A.allFinite())
+    {
+        msg << " is not finite: a non-finite state of the particle (x = "
+            << p.x[i].transpose() << ", radius " << p.a[i] << ", mass "
+            << p.m[i] << ") or of its " << nPairs << " lubricated pairs and "
+            << nContacts << " contacts";
+    }
+    else
+    {
+        const Vec6 lambda =
+            Eigen::SelfAdjointEigenSolver<Block>(A, Eigen::EigenvaluesOnly)
+           .eigenvalues();
+        msg << " is not positive definite to working precision (eigenvalues "
+            << lambda(0) << " to " << lambda(5) << "; radius " << p.a[i]
+            << ", mass " << p.m[i] << ", in " << nPairs
+            << " lubricated pairs and " << nContacts << " contacts)";
+        if (lubrication_ && lubrication_->params().terms == LubricationTerms::extended)
+        {
+            msg << "; lubrication terms extended gives R_Lub negative"
+                   " eigenvalues at small gaps (LubricationCoefficients.H):"
+                   " use terms leading with an implicit integrator";
+        }
+    }
+    return msg.str();
+}
+
+
 void HydrodynamicResistance::setStep(const Particles& p, double dt, bool inertia)
 {
     const std::size_t N = p.size();
@@ -367,53 +471,25 @@ void HydrodynamicResistance::setStep(const Particles& p, double dt, bool inertia
     rotation_.resize(N);
     inverseA_.resize(N);
 
-    // The diagonal block of A of each particle, from the pairs it is in
-    // (first, then second, in pair order), inverted; not stored
-    #pragma omp parallel for schedule(static) if(threaded(N))
+    // The diagonal block of A of each particle, inverted; the first whose
+    // factorisation fails or whose inverse is not finite
+    std::size_t failed = N;
+    #pragma omp parallel for schedule(static) reduction(min:failed) if(threaded(N))
     for (std::size_t i = 0; i < N; ++i)
     {
         const double a = p.a[i];
-        const double m = invDt*p.m[i];
-        const double I = invDt*p.I[i];
-        translation_[i] = 6*pi*eta*a + m;
-        rotation_[i] = 8*pi*eta*a*a*a + I;
-
-        // R: the Stokes drag (A.1) and the self blocks of R_Lub
-        Block R = Block::Zero();
-        R.diagonal() << Vec3::Constant(6*pi*eta*a), Vec3::Constant(8*pi*eta*a*a*a);
-        for (std::uint32_t s = index_.offset[i]; s < index_.offset[i + 1]; ++s)
+        translation_[i] = 6*pi*eta*a + invDt*p.m[i];
+        rotation_[i] = 8*pi*eta*a*a*a + invDt*p.I[i];
+        const Eigen::LLT<Block> llt(diagonalBlock(p, i, dt, invDt));
+        inverseA_[i] = llt.solve(Block::Identity());
+        if (llt.info() != Eigen::Success || !inverseA_[i].allFinite())
         {
-            const Pair& q = pairs_[s];
-            R += selfBlock(q.n, q.XA.ii, q.YA.ii, q.YB.ii, q.YC.ii);
+            failed = std::min(failed, i);
         }
-        for (std::uint32_t k = index_.offsetT[i]; k < index_.offsetT[i + 1]; ++k)
-        {
-            const Pair& q = pairs_[index_.slotT[k]];
-            R += selfBlock(q.n, q.XA.jj, q.YA.jj, q.YB.jj, q.YC.jj);
-        }
-
-        // K and Gamma: the springs and dashpots of its contacts
-        Block K = Block::Zero();
-        Block G = Block::Zero();
-        auto add = [&](const Contact& c, double side, double radius)
-        {
-            const ContactStiffness& k = c.k;
-            K += contactSelfBlock(c.n, side, radius, c.aij, k.kn, k.kt, k.kr);
-            G.topLeftCorner<3, 3>() += k.gammaN*outer(c.n, c.n);
-        };
-        for (std::uint32_t s = contactIndex_.offset[i]; s < contactIndex_.offset[i + 1]; ++s)
-        {
-            add(contacts_[s], -1, contacts_[s].ai);
-        }
-        for (std::uint32_t t = contactIndex_.offsetT[i]; t < contactIndex_.offsetT[i + 1]; ++t)
-        {
-            const Contact& c = contacts_[contactIndex_.slotT[t]];
-            add(c, 1, c.aj);
-        }
-
-        Block A = R + dt*K + G;
-        A.diagonal() += (Vec6() << Vec3::Constant(m), Vec3::Constant(I)).finished();
-        inverseA_[i] = A.llt().solve(Block::Identity());
+    }
+    if (failed < N)
+    {
+        throw SimulationError(blockFailure(p, failed, dt, invDt));
     }
 
     for (Contact& c : contacts_)

@@ -1,4 +1,5 @@
 #include "dynamics/ImplicitEuler.H"
+#include "dynamics/MoveAndWrap.H"
 
 namespace suspension
 {
@@ -35,7 +36,7 @@ void ImplicitEuler::evaluate
 }
 
 
-void ImplicitEuler::solve
+bool ImplicitEuler::solve
 (
     Particles& p,
     const std::vector<FlowSample>& ambient,
@@ -74,6 +75,10 @@ void ImplicitEuler::solve
     // (ConjugateGradient.H)
     statistics_ = solver_.solve(resistance_, b_, v_, &d_);
     iterations_ += statistics_.iterations;
+    if (!statistics_.converged)
+    {
+        return false;
+    }
 
     #pragma omp parallel for schedule(static) if(parallel)
     for (std::size_t i = 0; i < N; ++i)
@@ -85,20 +90,33 @@ void ImplicitEuler::solve
         p.u[i] = u;
         p.omega[i] = w;
     }
+    return true;
 }
 
 
-void ImplicitEuler::move(Particles& p, const LeesEdwardsBox& box, double dt)
+std::size_t ImplicitEuler::move(Particles& p, const LeesEdwardsBox& box, double dt)
 {
-    const std::size_t N = p.size();
-    const bool parallel = threaded(N);
-
-    #pragma omp parallel for schedule(static) if(parallel)
-    for (std::size_t i = 0; i < N; ++i)
+    return moveAndWrap(p, box, [&p, dt](std::size_t i)
     {
         p.x[i] += dt*p.u[i];
-        box.wrap(p.x[i], p.u[i]);
+    });
+}
+
+
+std::size_t ImplicitEuler::nonFiniteParticle() const
+{
+    const Eigen::VectorXd& y =
+        statistics_.outcome == ConjugateGradient::Outcome::nonFiniteRightHandSide
+      ? b_ : v_;
+    const std::size_t N = y.size()/6;
+    for (std::size_t i = 0; i < N; ++i)
+    {
+        if (!y.segment<6>(6*i).allFinite())
+        {
+            return i;
+        }
     }
+    return N;
 }
 
 } // namespace suspension

@@ -3,8 +3,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 
 namespace suspension
 {
@@ -165,6 +167,18 @@ void Simulation::start(double t, bool forcesGiven)
 {
     time_ = t;
     box_.setTime(t);
+    for (std::size_t i = 0; i < particles_.size(); ++i)
+    {
+        if (!box_.contains(particles_.x[i]))
+        {
+            std::ostringstream msg;
+            msg << "Simulation: particle " << particles_.id[i] << " at "
+                << particles_.x[i].transpose() << " is outside the box [0, L),"
+                << " L = " << box_.L().transpose()
+                << " (positions are wrapped into it: LeesEdwardsBox::wrap)";
+            throw std::invalid_argument(msg.str());
+        }
+    }
     search_.rebuild(particles_, box_, pairs_);
     if (!forcesGiven)
     {
@@ -194,9 +208,7 @@ void Simulation::start(double t, bool forcesGiven)
             particles_, box_, flow_, pairs_, search_.far(), ForceField::Output()
         );
     }
-    // No solve here: the statistics may be those of a step a restore()
-    // discarded
-    check(false);
+    check();
 }
 
 
@@ -234,6 +246,27 @@ void Simulation::restore(const Checkpoint& c)
 
 void Simulation::step(double dt)
 {
+    std::string failure;
+    try
+    {
+        failure = takeStep(dt);
+    }
+    catch (const std::exception& err)
+    {
+        failure = stepName(dt) + ": " + err.what();
+    }
+    if (!failure.empty())
+    {
+        throw SimulationError(failure);
+    }
+    time_ += dt;
+    ++steps_;
+    check();
+}
+
+
+std::string Simulation::takeStep(double dt)
+{
     // Path of each particle relative to the flow, for the list's skin
     const std::vector<FlowSample>& ambient = forces_.ambient();
     Uinf_.resize(particles_.size());
@@ -244,7 +277,10 @@ void Simulation::step(double dt)
     if (implicit_)
     {
         ScopedTime timer(times_.hydrodynamics);
-        implicit_->solve(particles_, ambient, dt);  // u^(n+1) at x^n
+        if (!implicit_->solve(particles_, ambient, dt))     // u^(n+1) at x^n
+        {
+            return solveFailure(dt);
+        }
     }
     {
         ScopedTime timer(times_.search);
@@ -252,16 +288,16 @@ void Simulation::step(double dt)
     }
 
     box_.setTime(time_ + dt);
+    std::size_t unwrapped;
     {
         ScopedTime timer(times_.integration);
-        if (implicit_)
-        {
-            ImplicitEuler::move(particles_, box_, dt);
-        }
-        else
-        {
-            VelocityVerlet::predict(particles_, box_, dt);
-        }
+        unwrapped = implicit_
+          ? ImplicitEuler::move(particles_, box_, dt)
+          : VelocityVerlet::predict(particles_, box_, dt);
+    }
+    if (unwrapped < particles_.size())
+    {
+        return moveFailure(unwrapped, dt);
     }
     {
         ScopedTime timer(times_.search);
@@ -273,10 +309,92 @@ void Simulation::step(double dt)
         ScopedTime timer(times_.integration);
         VelocityVerlet::correct(particles_, dt);
     }
+    return {};
+}
 
-    time_ += dt;
-    ++steps_;
-    check(true);
+
+std::string Simulation::stepName(double dt) const
+{
+    std::ostringstream name;
+    name.precision(10);
+    name << "step " << steps_ + 1 << " (t = " << time_ << " to " << time_ + dt
+         << ")";
+    return name.str();
+}
+
+
+std::string Simulation::solveFailure(double dt) const
+{
+    using Outcome = ConjugateGradient::Outcome;
+    const ConjugateGradient::Result& cg = implicit_->statistics();
+    std::ostringstream msg;
+    if (cg.outcome == Outcome::maxIterations)
+    {
+        msg << "the implicit velocity solve did not converge at "
+            << stepName(dt) << ": |r|/|b| = " << cg.residual << " after "
+            << cg.iterations << " CG iterations (tolerance "
+            << params_.solver.tolerance << ", maxIterations "
+            << params_.solver.maxIterations << ")";
+        return msg.str();
+    }
+    msg << "the implicit velocity solve failed at " << stepName(dt) << ": ";
+    if (cg.outcome == Outcome::notPositiveDefinite)
+    {
+        msg << "the operator is not positive definite (p.A p <= 0 at CG"
+               " iteration " << cg.iterations + 1 << ")";
+        return msg.str();
+    }
+    const bool rhs = cg.outcome == Outcome::nonFiniteRightHandSide;
+    if (rhs)
+    {
+        msg << "non-finite right-hand side";
+    }
+    else
+    {
+        msg << "non-finite residual after " << cg.iterations
+            << " CG iterations";
+    }
+    const Particles& p = particles_;
+    const std::size_t i = implicit_->nonFiniteParticle();
+    if (i == p.size())
+    {
+        msg << ", every entry of the right-hand side and of the unknowns"
+               " finite: a non-finite operator product";
+        return msg.str();
+    }
+    msg << ", first at particle " << p.id[i] << " (";
+    if (rhs)
+    {
+        msg << "F = " << p.F[i].transpose() << ", T = "
+            << p.T[i].transpose() << ", ";
+    }
+    msg << "u = " << p.u[i].transpose() << ", omega = "
+        << p.omega[i].transpose() << ")";
+    return msg.str();
+}
+
+
+std::string Simulation::moveFailure(std::size_t i, double dt) const
+{
+    const Particles& p = particles_;
+    std::ostringstream msg;
+    msg << "particle " << p.id[i] << " cannot be wrapped into the box at "
+        << stepName(dt) << ": its new position is ";
+    if (p.x[i].allFinite())
+    {
+        msg << "beyond 2^" << std::ilogb(LeesEdwardsBox::maxWrapLengths)
+            << " box lengths";
+    }
+    else
+    {
+        msg << "not finite";
+    }
+    msg << ", x = " << p.x[i].transpose() << ", u = " << p.u[i].transpose();
+    if (!implicit_)
+    {
+        msg << ", F = " << p.F[i].transpose();
+    }
+    return msg.str();
 }
 
 
@@ -405,19 +523,8 @@ double Simulation::velocityFluctuation() const
 }
 
 
-void Simulation::check(bool solved) const
+void Simulation::check() const
 {
-    if (solved && implicit_ && !implicit_->statistics().converged)
-    {
-        const ConjugateGradient::Result& cg = implicit_->statistics();
-        std::ostringstream msg;
-        msg << "the implicit velocity solve did not converge at step "
-            << steps_ << " (t = " << time_ << "): |r|/|b| = " << cg.residual
-            << " after " << cg.iterations << " CG iterations (tolerance "
-            << params_.solver.tolerance << ", maxIterations "
-            << params_.solver.maxIterations << ")";
-        throw SimulationError(msg.str());
-    }
     const Particles& p = particles_;
     for (std::size_t i = 0; i < p.size(); ++i)
     {

@@ -1,22 +1,24 @@
 #include "dynamics/VelocityVerlet.H"
 #include "core/Parallel.H"
+#include "dynamics/MoveAndWrap.H"
 
 namespace suspension
 {
 
-void VelocityVerlet::predict(Particles& p, const LeesEdwardsBox& box, double dt)
+std::size_t VelocityVerlet::predict
+(
+    Particles& p,
+    const LeesEdwardsBox& box,
+    double dt
+)
 {
-    const std::size_t N = p.size();
-
-    #pragma omp parallel for schedule(static) if(threaded(N))
-    for (std::size_t i = 0; i < N; ++i)
+    return moveAndWrap(p, box, [&p, dt](std::size_t i)   // then (16)
     {
         const Vec3 alpha = p.F[i]/p.m[i];
         p.x[i] += dt*p.u[i] + 0.5*dt*dt*alpha;      // (15a)
         p.u[i] += 0.5*dt*alpha;                     // (15b)
         p.omega[i] += 0.5*dt*p.T[i]/p.I[i];
-        box.wrap(p.x[i], p.u[i]);                   // (16)
-    }
+    });
 }
 
 
