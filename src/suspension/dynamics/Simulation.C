@@ -1,7 +1,10 @@
 #include "dynamics/Simulation.H"
 #include "dynamics/VelocityVerlet.H"
 
+#include <omp.h>
+
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <exception>
 #include <limits>
@@ -127,6 +130,10 @@ Simulation::Simulation
             "Simulation: no force limits the step of the implicit integrator;"
             " set deltaT or maxDisplacement"
         );
+    }
+    if (params.adaptiveThreads && threaded(particles_.size()))
+    {
+        governor_.emplace(omp_get_max_threads());
     }
     if (params.integrator != Integrator::velocityVerlet)
     {
@@ -413,7 +420,7 @@ void Simulation::advance(double interval)
             const auto [bound, limit] = stepBound();
             const double n =
                 std::max(1.0, std::ceil(remaining/bound*(1 - 1e-12)));
-            step(remaining/n);
+            governedStep(remaining/n);
             ++stepLimitCounts_[limit].steps;
             if (n == 1)
             {
@@ -428,11 +435,38 @@ void Simulation::advance(double interval)
     const double t0 = time_;
     for (std::uint64_t k = 1; k < n; ++k)
     {
-        step(dtMax_);
+        governedStep(dtMax_);
         time_ = t0 + k*dtMax_;  // no round-off drift over many steps
     }
-    step(t0 + interval - time_);
+    governedStep(t0 + interval - time_);
     time_ = t0 + interval;
+}
+
+
+void Simulation::governedStep(double dt)
+{
+    if (!governor_)
+    {
+        step(dt);
+        return;
+    }
+    omp_set_num_threads(governor_->threads());
+    const auto start = std::chrono::steady_clock::now();
+    step(dt);
+    governor_->record
+    (
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()
+    );
+}
+
+
+int Simulation::threads() const
+{
+    if (governor_)
+    {
+        return governor_->threads();
+    }
+    return threaded(particles_.size()) ? omp_get_max_threads() : 1;
 }
 
 

@@ -374,6 +374,11 @@ void Foam::suspensionCloud::reportStart() const
             << label(suspension::parallelMinParticles()) << " particles of"
             << " the threaded loops; OMP_NUM_THREADS allows " << threads << ")";
     }
+    else if (threads > 1 && sim.params().adaptiveThreads)
+    {
+        Info<< "1 to " << threads << ", the count that runs fastest"
+            << " (integration/threads adaptive; starts on 1)";
+    }
     else
     {
         Info<< threads;
@@ -443,6 +448,14 @@ void Foam::suspensionCloud::reportProgress()
     {
         Info<< "  steps set by";
         reportStepLimits();
+    }
+    if
+    (
+        sim.params().adaptiveThreads
+     && sim.particles().size() >= suspension::parallelMinParticles()
+    )
+    {
+        Info<< "  threads " << sim.threads();
     }
     Info<< "  CPU " << runTime_.elapsedCpuTime() << " s  peak RSS "
         << label(peakResidentMB() + 0.5) << " MB"

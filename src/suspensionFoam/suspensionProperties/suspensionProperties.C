@@ -51,7 +51,7 @@ suspension::Simulation::Params readIntegration
         dict,
         {
             "integrator", "deltaT", "safety", "skin", "stencil", "maxOverlap",
-            "maxDisplacement", "normalContact", "solver"
+            "maxDisplacement", "normalContact", "solver", "threads"
         }
     );
 
@@ -89,6 +89,18 @@ suspension::Simulation::Params readIntegration
     (
         dict, "maxDisplacement", p.maxDisplacement, interval::positive()
     );
+
+    // Threads: the count that runs fastest (adaptive, the default), or all
+    // that OpenMP allows (fixed)
+    const word threads(dict.getOrDefault<word>("threads", "adaptive"));
+    if (threads != "adaptive" && threads != "fixed")
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'threads' = " << threads << " in dictionary "
+            << dict.name() << " must be adaptive or fixed" << nl
+            << exit(FatalIOError);
+    }
+    p.adaptiveThreads = threads == "adaptive";
 
     // The normal contact springs of the implicit integrators: auto (unset),
     // implicit or explicit; read only by them
