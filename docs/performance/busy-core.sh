@@ -47,7 +47,7 @@ trap cleanup EXIT
 set -- $ends
 for N in $sizes; do
     T=$1; shift
-    base=$work/base$N
+    base=$work/base$N-$T
     cp -r "$top/tutorials/wavyShear/YW" "$base"
     (
         cd "$base"
@@ -94,9 +94,10 @@ done
 python3 - "$csv" "$commit" <<'PY'
 import csv, statistics, sys
 rows = [r for r in csv.DictReader(open(sys.argv[1])) if r["commit"] == sys.argv[2]]
-cases = sorted({(int(r["N"]), r["load"]) for r in rows})
-for N, load in cases:
-    sel = [r for r in rows if int(r["N"]) == N and r["load"] == load]
+cases = sorted({(int(r["N"]), float(r["endTime"]), r["load"]) for r in rows})
+for N, T, load in cases:
+    sel = [r for r in rows
+           if int(r["N"]) == N and float(r["endTime"]) == T and r["load"] == load]
     ref = {r["repeat"]: float(r["wall_s"]) for r in sel if r["run"] == "1t"}
     line = []
     for run in ("1t", "2t-adaptive", "2t-fixed"):
@@ -105,5 +106,5 @@ for N, load in cases:
         cpu = statistics.median(float(r["user_s"]) + float(r["sys_s"]) for r in rs)
         ratio = statistics.median(float(r["wall_s"])/ref[r["repeat"]] for r in rs)
         line.append(f"{run} wall {wall:.2f} s (x{ratio:.2f} of 1t), CPU {cpu:.2f} s")
-    print(f"N = {N}, {load} ({len(ref)} repeats): " + "; ".join(line))
+    print(f"N = {N}, strain {T}, {load} ({len(ref)} repeats): " + "; ".join(line))
 PY

@@ -1,6 +1,8 @@
 #include "core/Parallel.H"
 
+#include <algorithm>
 #include <atomic>
+#include <mutex>
 
 #include <fenv.h>
 
@@ -32,10 +34,18 @@ NonStopArithmetic::NonStopArithmetic()
     if (traps_)
     {
         fedisableexcept(FE_ALL_EXCEPT);
-        #pragma omp parallel
+
+        // The threads of the pool once, for good: they run only engine
+        // code, and threads started later copy this thread's environment
+        static std::once_flag pool;
+        std::call_once(pool, []
         {
-            fedisableexcept(FE_ALL_EXCEPT);
-        }
+            const int n = std::max(omp_get_max_threads(), omp_get_num_procs());
+            #pragma omp parallel num_threads(n)
+            {
+                fedisableexcept(FE_ALL_EXCEPT);
+            }
+        });
     }
 }
 
@@ -44,11 +54,6 @@ NonStopArithmetic::~NonStopArithmetic()
 {
     if (traps_)
     {
-        #pragma omp parallel
-        {
-            feclearexcept(FE_ALL_EXCEPT);
-            feenableexcept(traps_);
-        }
         feclearexcept(FE_ALL_EXCEPT);
         feenableexcept(traps_);
     }

@@ -79,14 +79,20 @@ void ThreadGovernor::endWindow()
     {
         if (perStep*(1 + params_.margin) < reference_)
         {
+            // Confirmed by the next probe, of the count it replaces, after
+            // a single window: a lucky window is undone at once
+            direction_ = probe_ < inUse_ ? 1 : -1;
             inUse_ = probe_;
             reference_ = perStep;
-            interval_ = params_.firstInterval;
+            interval_ = 1;
             ++switches_;
         }
         else
         {
-            interval_ = std::min(params_.maxInterval, 2*interval_);
+            interval_ = std::min
+            (
+                params_.maxInterval, std::max(params_.firstInterval, 2*interval_)
+            );
             direction_ = -direction_;
         }
         sinceProbe_ = 0;
