@@ -166,7 +166,7 @@ namespace
 // Coefficients
 
 
-TEST(LubricationCoefficients, TableValuesSection2c)
+TEST(LubricationCoefficients, TableValuesOfJeffreyOnishi)
 {
     // The dimensional singular coefficients of pi eta (1/xi) and pi eta L at a_1 = 1,
     // printed to 6 decimals
@@ -238,7 +238,7 @@ TEST(LubricationCoefficients, TableValuesSection2c)
 }
 
 
-TEST(LubricationCoefficients, ClosedFormsSection2c)
+TEST(LubricationCoefficients, ClosedForms)
 {
     // The dimensional closed forms in (a1, a2), against the
     // code's lambda-series, for any radii and viscosity
@@ -324,7 +324,7 @@ TEST(LubricationCoefficients, ClosedFormsSection2c)
 }
 
 
-TEST(LubricationCoefficients, XiLogOrderSection2a)
+TEST(LubricationCoefficients, LogTermsOfTheGap)
 {
     // Coefficients of pi eta xi L (extended mode) at a_1 = 1: the g3 (g5, g6)
     // of JO 1984 (A) and J92 (G, H) with the JO/J92 prefactors pi eta (a_a + a_b)^k and
@@ -386,7 +386,7 @@ TEST(LubricationCoefficients, XiLogOrderSection2a)
 }
 
 
-TEST(LubricationCoefficients, IdentitiesSection6)
+TEST(LubricationCoefficients, Identities)
 {
     // Exact identities of the singular (1/xi and L) orders, for all lambda
     for (const double ratio : sizeRatios)
@@ -562,7 +562,7 @@ TEST(Lubrication, ReynoldsSqueezeUnequalSpheres)
 }
 
 
-TEST(Lubrication, WorkedNumbersSection5)
+TEST(Lubrication, WorkedNumbers)
 {
     // |F_i| for a unit approach speed of j, eta = a_1 = 1:
     // 1/xi term only; 1/xi + g2 L; 1/xi + g2 L + g3 xi L

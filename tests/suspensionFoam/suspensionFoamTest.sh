@@ -85,9 +85,10 @@
 #               full disk does to a write) stops the run with an error
 #               naming the file; the earlier times are intact, the failed
 #               one has no state and is set aside by the restart
-#   badControls deltaT <= 0, an endTime before the start time and a number
-#               out of range (1e999) in controlDict or suspensionProperties:
-#               FatalIOErrors naming the file and the entry
+#   badControls deltaT <= 0, an endTime before the start time, a number
+#               out of range (1e999) in controlDict or suspensionProperties,
+#               an unknown integration/threads: FatalIOErrors naming the
+#               file and the entry
 #   oversizedCase
 #               a population too large for the machine's memory is refused
 #               by makeSuspension -boxOnly, makeSuspension and the solver
@@ -742,6 +743,9 @@ badControls)
         setEntry "d$value" $control deltaT "$value"
         expectInputError "d$value" controlDict "'deltaT'"
     done
+    newCase t
+    setEntry t $properties integration/threads sometimes
+    expectInputError t suspensionProperties "'threads'" "adaptive or fixed"
     # (foamDictionary itself dies of the floating-point trap on 1e999)
     newCase huge
     sed -i 's/^\( *stiffness  *\)[^;]*;/\11e999;/' "$work/huge/$properties"
