@@ -425,6 +425,7 @@ void Simulation::advance(double interval)
             if (n == 1)
             {
                 time_ = end;
+                restoreThreads();
                 return;
             }
         }
@@ -440,6 +441,16 @@ void Simulation::advance(double interval)
     }
     governedStep(t0 + interval - time_);
     time_ = t0 + interval;
+    restoreThreads();
+}
+
+
+void Simulation::restoreThreads() const
+{
+    if (governor_)
+    {
+        omp_set_num_threads(governor_->maxThreads());
+    }
 }
 
 
@@ -464,7 +475,7 @@ int Simulation::threads() const
 {
     if (governor_)
     {
-        return governor_->threads();
+        return governor_->inUse();
     }
     return threaded(particles_.size()) ? omp_get_max_threads() : 1;
 }

@@ -280,10 +280,12 @@ void Foam::suspensionCloud::failed(const std::string& cause)
     }
 
     // Written unless this run has it on disk: a time on disk, above all
-    // the one the run started from, is never written over
+    // the one the run started from, is never written over (nor one an
+    // earlier run left there)
     const bool onDisk = lastGoodIndex_ == writtenIndex_;
     runTime_.setTime(lastGoodTime_, lastGoodIndex_);
-    if (!onDisk)
+    const bool taken = !onDisk && exists(runTime_.timePath());
+    if (!onDisk && !taken)
     {
         runTime_.writeNow();
     }
@@ -292,7 +294,11 @@ void Foam::suspensionCloud::failed(const std::string& cause)
         << cause.c_str() << nl
         << "    The last good state (time " << runTime_.timeName()
         << ", strain " << sim_->time() << ", step " << steps(*sim_) << ") "
-        << (onDisk ? "is on disk, unchanged, in " : "is written to ")
+        << (
+               onDisk ? "is on disk, unchanged, in "
+             : taken ? "is not written: an earlier run's files hold "
+             : "is written to "
+           )
         << runTime_.timePath() << nl
         << "    To continue from it, lower integration/deltaT or safety, or"
         << " raise contact/stiffness, and run again" << nl

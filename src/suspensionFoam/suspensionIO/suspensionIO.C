@@ -266,13 +266,31 @@ word digestOf(const fileName& path)
 }
 
 
-//- Whether an uncompressed OpenFOAM file ends with the end divider that
-//  IOobject::writeEndDivider writes after the data (ascii and binary)
+//- Whether an OpenFOAM file ends with the end divider that
+//  IOobject::writeEndDivider writes after the data (ascii and binary); a
+//  compressed one (.gz) is read through, so that a truncated stream fails
 bool endsWithDivider(const fileName& path)
 {
     OStringStream os;
     IOobject::writeEndDivider(os);
     const std::string divider = os.str().substr(2);   // after its "\n\n"
+    std::string tail;
+    if (path.hasExt("gz"))
+    {
+        IFstream gz(path.lessExt());
+        std::istream& is = gz.stdStream();
+        std::vector<char> buf(1 << 16);
+        while (is)
+        {
+            is.read(buf.data(), buf.size());
+            tail.append(buf.data(), size_t(is.gcount()));
+            if (tail.size() > divider.size())
+            {
+                tail.erase(0, tail.size() - divider.size());
+            }
+        }
+        return !is.bad() && tail == divider;
+    }
     std::ifstream is(path, std::ios::binary);
     is.seekg(0, std::ios::end);
     const std::streamoff size = is.tellg();
@@ -280,7 +298,7 @@ bool endsWithDivider(const fileName& path)
     {
         return false;
     }
-    std::string tail(divider.size(), ' ');
+    tail.assign(divider.size(), ' ');
     is.seekg(size - std::streamoff(divider.size()));
     is.read(&tail[0], tail.size());
     return bool(is) && tail == divider;
@@ -486,13 +504,14 @@ Foam::suspensionIO::stored Foam::suspensionIO::check(const fileName& timeDir)
                 reason = name + " is missing";
                 return;
             }
-            const off_t size = fileSize(path);
-            const label listedSize = listed.get<label>("size");
-            if (size != off_t(listedSize))
+            // (a string: files beyond 2 GiB overflow a 32-bit label)
+            const std::string size = std::to_string(fileSize(path));
+            const std::string listedSize = listed.get<string>("size");
+            if (size != listedSize)
             {
                 reason =
-                    name + " holds " + Foam::name(label(size)) + " bytes, the"
-                    " state lists " + Foam::name(listedSize);
+                    name + " holds " + size + " bytes, the state lists "
+                  + listedSize;
             }
             else if (digestOf(path) != listed.get<string>("sha1"))
             {
@@ -562,8 +581,13 @@ void Foam::suspensionIO::selectStartTime(const argList& args)
             if (s.state == stored::absent)
             {
                 // OpenFOAM writes uniform/time first: a write stopped
-                // before the cloud
-                if (!isFile(dir/"uniform"/"time"))
+                // before the cloud, or before any file
+                const bool empty =
+                    readDir(dir, fileName::FILE).empty()
+                 && readDir(dir/"uniform", fileName::FILE).empty()
+                 && readDir(dir, fileName::DIRECTORY).size()
+                  <= (isDir(dir/"uniform") ? 1 : 0);
+                if (!isFile(dir/"uniform"/"time") && !empty)
                 {
                     FatalErrorInFunction
                         << "The latest time " << times[i].name() << " holds"
@@ -573,7 +597,9 @@ void Foam::suspensionIO::selectStartTime(const argList& args)
                         << " startTime in " << controlFile << ")" << nl
                         << exit(FatalError);
                 }
-                s.reason = "uniform/time but no suspension";
+                s.reason =
+                    empty ? "no file: a write stopped at its start"
+                  : "uniform/time but no suspension";
             }
             const fileName aside = asideName(dir);
             if (!mv(dir, aside))
@@ -943,7 +969,13 @@ void Foam::suspensionIO::write
         nextId = max(nextId, label(id) + 1);
     }
     passiveParticle::particleCount_ = nextId;
-    cloud.write();
+    if (!cloud.write())
+    {
+        FatalErrorInFunction
+            << "Cannot write the cloud " << cloudName << " of time "
+            << mesh.time().timeName() << ": " << systemError().c_str() << nl
+            << exit(FatalError);
+    }
 
     const auto particleOut = [&](const word& name)
     {
@@ -1011,7 +1043,7 @@ void Foam::suspensionIO::write
     for (const fileName& rel : committedFiles(timeDir))
     {
         const fileName path = timeDir/rel;
-        if (!path.hasExt("gz") && !endsWithDivider(path))
+        if (!endsWithDivider(path))
         {
             FatalErrorInFunction
                 << "The file " << path << " was not written whole (it does"
@@ -1022,7 +1054,7 @@ void Foam::suspensionIO::write
                 << exit(FatalError);
         }
         dictionary listed;
-        listed.add("size", label(fileSize(path)));
+        listed.add("size", string(std::to_string(fileSize(path))));
         listed.add("sha1", string(digestOf(path)));
         folderDict(files, rel).add(rel.name(), listed);
     }
