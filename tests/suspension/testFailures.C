@@ -139,38 +139,29 @@ namespace
 }
 
 
-TEST(Failures, NonFinitePositionStopsTheMove)
+TEST(Failures, PositionThatCannotBeWrappedStopsTheMove)
 {
-    // A NaN position is reported by the move, never wrapped nor handed to
-    // the neighbour search
-    for (const Integrator integrator : integrators)
+    // A NaN position, and one too far out to wrap, are reported by the
+    // move, never wrapped nor handed to the neighbour search
+    struct Case { std::size_t k; int axis; double value; const char* why; };
+    const Case cases[] =
     {
-        Simulation sim = sheared(integrator, shear);
-        const std::size_t k = 17;
-        const std::int64_t id = sim.particles().id[k];
-        sim.particles().x[k].y() = NaN;
-        const std::string msg = stepError(sim);
-        EXPECT_TRUE(namesParticle(msg, id)) << name(integrator) << ": " << msg;
-        EXPECT_TRUE(namesStep(msg, sim.steps())) << name(integrator) << ": " << msg;
-        EXPECT_TRUE(has(msg, "cannot be wrapped") && has(msg, "not finite"))
-            << name(integrator) << ": " << msg;
-    }
-}
-
-
-TEST(Failures, PositionTooFarToWrapStopsTheMove)
-{
-    for (const Integrator integrator : integrators)
+        {17, 1, NaN, "not finite"},
+        {23, 0, 1e30, "beyond 2^40 box lengths"}
+    };
+    for (const Case& c : cases)
     {
-        Simulation sim = sheared(integrator, shear);
-        const std::size_t k = 23;
-        const std::int64_t id = sim.particles().id[k];
-        sim.particles().x[k].x() = 1e30;
-        const std::string msg = stepError(sim);
-        EXPECT_TRUE(namesParticle(msg, id)) << name(integrator) << ": " << msg;
-        EXPECT_TRUE(namesStep(msg, sim.steps())) << name(integrator) << ": " << msg;
-        EXPECT_TRUE(has(msg, "cannot be wrapped") && has(msg, "beyond 2^40 box lengths"))
-            << name(integrator) << ": " << msg;
+        for (const Integrator integrator : integrators)
+        {
+            Simulation sim = sheared(integrator, shear);
+            const std::int64_t id = sim.particles().id[c.k];
+            sim.particles().x[c.k][c.axis] = c.value;
+            const std::string msg = stepError(sim);
+            EXPECT_TRUE(namesParticle(msg, id)) << name(integrator) << ": " << msg;
+            EXPECT_TRUE(namesStep(msg, sim.steps())) << name(integrator) << ": " << msg;
+            EXPECT_TRUE(has(msg, "cannot be wrapped") && has(msg, c.why))
+                << name(integrator) << ": " << msg;
+        }
     }
 }
 
