@@ -351,16 +351,7 @@ TEST(Failures, ExceptionInsideAStepBecomesASimulationError)
         sheared(integrator, counting);
         const FailingFlow flow(1.0, counting.checks() + 1);
 
-        Simulation sim
-        (
-            packing().particles, LeesEdwardsBox(packing().box.L(), 1.0), flow,
-            models(), params(integrator)
-        );
-        sim.start(0);
-        for (int k = 0; k < 3; ++k)
-        {
-            sim.step(sim.deltaT());
-        }
+        Simulation sim = sheared(integrator, flow);
         const std::string msg = stepError(sim);
         EXPECT_EQ(msg.rfind("step 4 (t = ", 0), 0u) << name(integrator) << ": " << msg;
         EXPECT_TRUE(has(msg, "): FailingFlow: a particle outside the mesh"))
