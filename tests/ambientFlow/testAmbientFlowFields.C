@@ -545,3 +545,58 @@ TEST_F(AmbientFlowFields, ParticleOutsideTheMeshStopsTheRunNamingIt)
     sampleAll(inside);
     EXPECT_NO_THROW(engine.sampled(inside));
 }
+
+
+TEST_F(AmbientFlowFields, MeshFieldIsTheShearPlusTheRegisteredFieldAndFollowsIt)
+{
+    // meshField: gammaDot y e_x plus the field a solver registers; the
+    // samples of a zero field are bitwise those of uniformShear, correct()
+    // reports a change only when the registered field differs bitwise from
+    // the one in use, and then the samples and the bound follow it
+    const std::unique_ptr<Time> runTime = time();
+    const std::unique_ptr<fvMesh> m = mesh(*runTime, 4, 32, 2);     // k dy = 0.2
+    const dictionary dict = flowDict("type meshField; shearRate 1; field Uprime;");
+
+    // No field registered: an error naming the entry and the solver
+    const std::string missing =
+        ioErrorOf([&]() { ambientFlow::New(dict, box, m.get()); });
+    EXPECT_PRED2(contains, missing, "'Uprime' (entry 'field')");
+    EXPECT_PRED2(contains, missing, "suspensionCoupledFoam");
+
+    volVectorField Uprime
+    (
+        IOobject("Uprime", runTime->timeName(), *m), *m,
+        dimensionedVector(dimVelocity, Zero)
+    );
+    autoPtr<ambientFlow> flow(ambientFlow::New(dict, box, m.get()));
+    const autoPtr<ambientFlow> shear(makeFlow("type uniformShear; shearRate 1;", box));
+    const point p(1.3, 2.7, 0.9);
+    EXPECT_EQ(str(flow->U(p)), str(shear->U(p)));
+    EXPECT_EQ(flow->gradU(p), shear->gradU(p));
+    EXPECT_EQ(flow->maxVelocityGradient(), 1);
+    EXPECT_FALSE(flow->correct()) << "the same field is no change";
+
+    // A wave u' = A sin(k y) e_x at the cell and boundary face centres
+    const scalar k = constant::mathematical::twoPi/box.y();
+    const auto wave = [&](const point& c) { return vector(0.3*std::sin(k*c.y()), 0, 0); };
+    forAll(Uprime, celli)
+    {
+        Uprime[celli] = wave(m->C()[celli]);
+    }
+    forAll(Uprime.boundaryField(), patchi)
+    {
+        forAll(Uprime.boundaryField()[patchi], facei)
+        {
+            Uprime.boundaryFieldRef()[patchi][facei] =
+                wave(m->C().boundaryField()[patchi][facei]);
+        }
+    }
+    EXPECT_EQ(flow->U(p).x(), shear->U(p).x()) << "not taken before correct()";
+    EXPECT_TRUE(flow->correct());
+    EXPECT_FALSE(flow->correct());
+    EXPECT_NEAR(flow->U(p).x(), p.y() + 0.3*std::sin(k*p.y()), 0.005);
+    EXPECT_NEAR(flow->gradU(p).yx(), 1 + 0.3*k*std::cos(k*p.y()), 0.01);
+    EXPECT_GT(flow->maxVelocityGradient(), 1 + 0.2*k);
+    EXPECT_LE(flow->maxVelocityGradient(), 1 + 0.3*k*1.01 + 0.3*k)
+        << "|gammaDot| + max |grad u'|";
+}

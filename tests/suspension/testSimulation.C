@@ -9,6 +9,7 @@
 
 #include <atomic>
 #include <cmath>
+#include <iostream>
 #include <random>
 
 using namespace suspension;
@@ -377,4 +378,148 @@ TEST(Simulation, AdvanceTakesFullStepsAndAShorterLastOne)
     // A whole number of steps takes no extra step of round-off size
     a.advance(3*dt);
     EXPECT_EQ(a.steps(), 6u);
+}
+
+
+namespace
+{
+    //- A flow a coupled solver updates between outer steps: a wave of
+    //  amplitude that can be changed (ShearFlow, eq. 17)
+    class ChangingFlow
+    :
+        public AmbientFlow
+    {
+        double gammaDot_;
+        double Ly_;
+        ShearFlow flow_;
+
+    public:
+
+        ChangingFlow(double gammaDot, double Ly)
+        :
+            gammaDot_(gammaDot), Ly_(Ly), flow_(gammaDot)
+        {}
+
+        void setAmplitude(double A) { flow_ = ShearFlow(gammaDot_, A, 1, Ly_); }
+
+        FlowSample sample(const Vec3& x) const override
+        {
+            return flow_.sample(x);
+        }
+        double shearRate() const override { return gammaDot_; }
+        double maxVelocityGradient() const override
+        {
+            return flow_.maxVelocityGradient();
+        }
+    };
+}
+
+
+TEST(Simulation, ChangedFlowContinuesAsARestartInTheNewFlow)
+{
+    // A run whose flow changes at t continues as a run started at t in
+    // the new flow from the same state: bitwise, for the explicit and the
+    // implicit integrator (the implicit operator holds ambient forces).
+    // Without flowChanged() the implicit engine goes on with samples of
+    // the old flow (the two then differ); the step limits follow the
+    // flow's new bound on |grad U|. Frictionless with stiff springs
+    // (k_hat 5e6), the implicit integrator's automatic choice of implicit
+    // normal springs flips in the wave: their limit is below half of
+    // lubricationGap = 25 epsilon/max|grad U| in uniform shear, not in the
+    // wave; the run continues with the integrator a run started there has
+    const Vec3 L(12, 12, 12);
+    ForceModels stiffFrictionless;
+    {
+        Lubrication::Params lub;
+        lub.epsilon = 1e-3;
+        lub.deltaLub = 0.25;
+        stiffFrictionless.set(Lubrication(lub));
+        stiffFrictionless.set
+        (
+            FrictionalContact(FrictionalContact::fromGroups(5e6, 2.0/7.0, 1e-7, 0))
+        );
+    }
+    const std::pair<Integrator, bool> cases[] =
+    {
+        {Integrator::velocityVerlet, false},
+        {Integrator::implicitEuler, false},
+        {Integrator::implicitEuler, true}
+    };
+    for (const auto& [integrator, flips] : cases)
+    {
+        const std::string name =
+            (integrator == Integrator::velocityVerlet ? "velocityVerlet" : "implicitEuler")
+          + std::string(flips ? ", stiff frictionless" : "");
+        const ForceModels models = flips ? stiffFrictionless : allModels();
+        Simulation::Params params = simParams();
+        params.integrator = integrator;
+        // random spheres overlap: the explicit step resolves their contacts
+        params.deltaT = integrator == Integrator::velocityVerlet ? 1e-7 : 1e-5;
+        const double interval = 20*params.deltaT;
+
+        // The state at t, reached in uniform shear
+        ChangingFlow uniform(1.0, L.y());
+        Simulation first
+        (
+            randomParticles(L, 200, 1.4, 7), LeesEdwardsBox(L, 1.0), uniform,
+            models, params
+        );
+        first.start(0);
+        first.advance(interval);
+        Simulation::Checkpoint at;
+        first.checkpoint(at);
+        const std::vector<TimeStepLimit> before = first.limits().all();
+
+        // Two runs on from t whose flow becomes a wave there: told, not told
+        ChangingFlow toldFlow(1.0, L.y());
+        ChangingFlow notToldFlow(1.0, L.y());
+        Simulation told(at.particles, LeesEdwardsBox(L, 1.0), toldFlow, models, params);
+        Simulation notTold(at.particles, LeesEdwardsBox(L, 1.0), notToldFlow, models, params);
+        told.restore(at);
+        notTold.restore(at);
+        toldFlow.setAmplitude(40);
+        notToldFlow.setAmplitude(40);
+        told.flowChanged();
+        told.advance(interval);
+        notTold.advance(interval);
+
+        // A run started at t in the wave
+        ChangingFlow wave(1.0, L.y());
+        wave.setAmplitude(40);
+        Simulation fresh(at.particles, LeesEdwardsBox(L, 1.0), wave, models, params);
+        fresh.restore(at);
+        fresh.advance(interval);
+
+        EXPECT_EQ(told.particles().x, fresh.particles().x) << name;
+        EXPECT_EQ(told.particles().u, fresh.particles().u) << name;
+        EXPECT_EQ(told.steps(), fresh.steps()) << name;
+        EXPECT_EQ(told.implicitNormalContact(), fresh.implicitNormalContact()) << name;
+        if (flips)
+        {
+            EXPECT_NE(told.implicitNormalContact(), first.implicitNormalContact())
+                << name << ": the automatic choice does not flip in the wave";
+        }
+        if (integrator == Integrator::implicitEuler && !flips)
+        {
+            // Its first solve used the old flow's samples (velocity Verlet
+            // moves first with the forces it carries, as told and fresh do)
+            EXPECT_NE(notTold.particles().x, fresh.particles().x) << name;
+        }
+
+        ASSERT_EQ(told.limits().all().size(), fresh.limits().all().size()) << name;
+        for (std::size_t l = 0; l < told.limits().all().size(); ++l)
+        {
+            const TimeStepLimit& c = told.limits().all()[l];
+            EXPECT_EQ(c.name, fresh.limits().all()[l].name) << name;
+            EXPECT_EQ(c.value, fresh.limits().all()[l].value) << name << ' ' << c.name;
+            for (const TimeStepLimit& b : before)
+            {
+                if (c.name == "lubricationGap" && b.name == c.name)
+                {
+                    EXPECT_LT(c.value, b.value)
+                        << "the accuracy limit of the faster flow is shorter";
+                }
+            }
+        }
+    }
 }

@@ -113,15 +113,8 @@ export OMP_WAIT_POLICY=PASSIVE
 source=$(cd "$(dirname "$0")/tiny" && pwd)
 work=$(mktemp -d "${TMPDIR:-/tmp}/suspensionFoamTest.XXXXXX")
 trap 'rm -rf "$work"' EXIT
-
-fail()
-{
-    echo "FAILED ($test): $*" >&2
-    for log in "$work"/*/log.*; do
-        [ -f "$log" ] && { echo "=== $log" >&2; tail -n 40 "$log" >&2; }
-    done
-    exit 1
-}
+solver=wavyShearFoam
+. "$(dirname "$0")/../caseTestFunctions.sh"
 
 # Mesh case $1 on the box of its population
 mesh()
@@ -140,13 +133,6 @@ newCase()
     mesh "$1"
 }
 
-# Set entries: setEntry <case> <file> <entry> <value>
-setEntry()
-{
-    foamDictionary -entry "$3" -set "$4" "$work/$1/$2" > /dev/null 2>&1 \
-        || fail "cannot set $3 in $2"
-}
-
 # Number of entries of an ascii IOField: the line before the first '(',
 # or N of a uniform list N{value}
 entries()
@@ -154,26 +140,6 @@ entries()
     awk '/^[0-9]+\{/ { sub(/\{.*/, ""); print; exit }
          /^\($/ { print prev; exit }
          { prev = $0 }' "$1"
-}
-
-# Expect a FatalIOError before any step: expectInputError <case> <text>...
-expectInputError()
-{
-    local c=$1
-    shift
-    if (cd "$work/$c" && wavyShearFoam > log.wavyShearFoam 2>&1); then
-        fail "wavyShearFoam accepted the bad input"
-    fi
-    local log="$work/$c/log.wavyShearFoam"
-    grep -q "FOAM FATAL IO ERROR" "$log" || fail "no FatalIOError"
-    for text in "$@"; do
-        grep -qF -- "$text" "$log" || fail "the error does not name '$text'"
-    done
-    grep -q "^strain " "$log" && fail "time steps were taken"
-    [ ! -e "$work/$c/postProcessing/rheology" ] || fail "rheology.dat written"
-    [ "$(cd "$work/$c" && foamListTimes -noZero 2>/dev/null)" = "" ] \
-        || fail "a time directory was written"
-    return 0
 }
 
 properties=constant/suspensionProperties

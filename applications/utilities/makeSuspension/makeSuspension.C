@@ -32,6 +32,7 @@ Usage
 
 #include "fvCFD.H"
 #include "suspensionCloud.H"
+#include "meshField.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -72,6 +73,33 @@ int main(int argc, char *argv[])
         }
 
         #include "createMesh.H"
+
+        // A flow solved on the mesh (ambientFlow meshField) starts from
+        // u' = 0, as in the coupled solver when it packs
+        autoPtr<volVectorField> UprimePtr;
+        {
+            const suspensionProperties properties(runTime);
+            const dictionary& flowDict = properties.ambientFlowDict();
+            if (flowDict.get<word>("type") == meshField::typeName)
+            {
+                UprimePtr.reset
+                (
+                    new volVectorField
+                    (
+                        IOobject
+                        (
+                            meshField::fieldName(flowDict),
+                            runTime.timeName(),
+                            mesh,
+                            IOobject::NO_READ,
+                            IOobject::NO_WRITE
+                        ),
+                        mesh,
+                        dimensionedVector(dimVelocity, Zero)
+                    )
+                );
+            }
+        }
 
         // Packs the population and writes it at the start time
         const suspensionCloud particles(runTime, mesh);

@@ -219,6 +219,32 @@ void Simulation::start(double t, bool forcesGiven)
 }
 
 
+void Simulation::flowChanged()
+{
+    // Chosen again as for a run started in this flow
+    const bool normal =
+        suspension::implicitNormalContact(forces_.models(), particles_, flow_, params_);
+    if (implicit_ && normal != implicitNormalContact_)
+    {
+        implicit_.emplace
+        (
+            forces_.models(),
+            params_.integrator == Integrator::implicitEuler,
+            params_.solver,
+            normal
+        );
+    }
+    implicitNormalContact_ = normal;
+    limits_ = makeLimits(forces_.models(), particles_, flow_, params_, normal);
+    dtMax_ = params_.deltaT > 0 ? params_.deltaT : limits_.deltaT();
+    if (!(params_.deltaT > 0))
+    {
+        stepLimitCounts_[0].name = limits_.binding().name;
+    }
+    start(time_, true);
+}
+
+
 namespace
 {
     //- The slots of a near list and their contact history, what a rebuild

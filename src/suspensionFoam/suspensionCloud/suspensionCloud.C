@@ -252,7 +252,8 @@ void Foam::suspensionCloud::writeState() const
 {
     suspensionIO::write
     (
-        mesh_, *sim_, steps(*sim_), particleStresslets(), particleCells()
+        mesh_, *sim_, steps(*sim_), particleStresslets(), particleCells(),
+        committed_
     );
     writtenIndex_ = runTime_.timeIndex();
 
@@ -510,6 +511,7 @@ Foam::suspensionCloud::suspensionCloud
       : ambientFlow::New(properties_.ambientFlowDict(), start_.box, &mesh)
     ),
     engineFlow_(*flow_),
+    committed_(),
     sim_(),
     lastGood_(),
     lastGoodTime_(runTime.value()),
@@ -593,7 +595,8 @@ const Foam::suspensionCloud& Foam::suspensionCloud::lookup
         FatalErrorInFunction
             << "Function object " << user << " needs the suspension cloud '"
             << suspensionIO::cloudName << "' of wavyShearFoam, which mesh "
-            << mesh.name() << " does not hold: run it with wavyShearFoam"
+            << mesh.name() << " does not hold: run it with wavyShearFoam or"
+            << " suspensionCoupledFoam"
             << nl << exit(FatalError);
     }
     return *cloudPtr;
@@ -666,6 +669,36 @@ void Foam::suspensionCloud::evolve()
     lastGoodIndex_ = runTime_.timeIndex();
 
     reportProgress();
+}
+
+
+bool Foam::suspensionCloud::correctFlow()
+{
+    if (!flow_->correct())
+    {
+        return false;
+    }
+    // The stresslets of this time stay those of the flow the particles
+    // moved in: what the solver spread, the function objects and the write
+    // see
+    try
+    {
+        const suspension::NonStopArithmetic nonStop;
+        sim_->flowChanged();
+    }
+    catch (const std::exception& err)
+    {
+        failed(err.what());
+    }
+    written_ = false;
+    sim_->checkpoint(lastGood_);
+    return true;
+}
+
+
+void Foam::suspensionCloud::commitWith(const regIOobject& io)
+{
+    committed_.append(&io);
 }
 
 

@@ -305,10 +305,15 @@ bool endsWithDivider(const fileName& path)
 }
 
 
-//- The files of timeDir, relative to it, that its state lists: those of
-//  uniform (OpenFOAM's time; not the state itself or its temporary), of
-//  the cloud and the contact history, and of the cloud's properties
-fileNameList committedFiles(const fileName& timeDir)
+//- The files of timeDir, relative to it, that its state lists: the
+//  solver's fields, those of uniform (OpenFOAM's time; not the state
+//  itself or its temporary), of the cloud and the contact history, and of
+//  the cloud's properties
+fileNameList committedFiles
+(
+    const fileName& timeDir,
+    const UList<const regIOobject*>& fields
+)
 {
     const fileName folders[] =
     {
@@ -318,6 +323,12 @@ fileNameList committedFiles(const fileName& timeDir)
         "uniform"/cloud::prefix/suspensionIO::cloudName
     };
     DynamicList<fileName> files;
+    for (const regIOobject* io : fields)
+    {
+        // as written: compressed (writeCompression on) or not
+        const fileName gz = io->name() + ".gz";
+        files.append(isFile(timeDir/gz, false) ? gz : fileName(io->name()));
+    }
     for (const fileName& folder : folders)
     {
         fileNameList names = readDir(timeDir/folder, fileName::FILE, false);
@@ -339,6 +350,10 @@ fileNameList committedFiles(const fileName& timeDir)
 dictionary& folderDict(dictionary& files, const fileName& rel)
 {
     dictionary* d = &files;
+    if (!rel.hasPath())
+    {
+        return *d;
+    }
     const wordList parts(rel.path().components());
     for (const word& part : parts)
     {
@@ -934,7 +949,8 @@ void Foam::suspensionIO::write
     const suspension::Simulation& sim,
     const std::uint64_t steps,
     const std::vector<suspension::Mat3>& S,
-    const labelList& cells
+    const labelList& cells,
+    const UList<const regIOobject*>& fields
 )
 {
     const fullPrecision precision;
@@ -1027,6 +1043,17 @@ void Foam::suspensionIO::write
     writeField(contactOut("xiT"), vectorField(xiT));
     writeField(contactOut("xiR"), vectorField(xiR));
 
+    // The solver's fields (written as regIOobjects, checked below)
+    for (const regIOobject* io : fields)
+    {
+        if (!io->write())
+        {
+            FatalErrorInFunction
+                << "Cannot write " << io->objectPath() << ": "
+                << systemError().c_str() << nl << exit(FatalError);
+        }
+    }
+
     IOdictionary dict
     (
         timeFile(mesh.time(), "uniform", stateName, IOobject::NO_READ)
@@ -1040,7 +1067,7 @@ void Foam::suspensionIO::write
 
     // The files of the time, whole and on disk, with their digests
     dictionary files;
-    for (const fileName& rel : committedFiles(timeDir))
+    for (const fileName& rel : committedFiles(timeDir, fields))
     {
         const fileName path = timeDir/rel;
         if (!endsWithDivider(path))

@@ -1,0 +1,271 @@
+#!/usr/bin/env bash
+#------------------------------------------------------------------------------
+# Case tests of suspensionCoupledFoam on the tiny case next to this script
+# (Table 1 FL spheres, N = 100, phi = 0.3, a mesh of 1 x 16 x 1 cells, three
+# cyclic pairs). Each test runs in its own temporary copy.
+#
+#   coupledTest.sh <binDir> <WM_PROJECT_DIR> <test>
+#
+# Tests:
+#   run           a coupled run with feedback and Kolmogorov forcing: every
+#                 outer step's momentum residual below 1e-10 and its stress
+#                 conserved to 1e-13 (the mesh field's integral against the
+#                 particles' sum); amplitude.dat, profile.dat and the fields
+#                 U, Uprime, sigmaP, sigmaPRelaxed, alphaP at the write
+#                 times; the state lists Uprime and sigmaPRelaxed; the mean
+#                 of phi across y is the packing's; suspensionPlot draws
+#                 coupling.png and amplitude.png
+#   particleFree  feedback off: u' on 8, 16 and 32 cells against
+#                 F/(eta0 k^2) sin(k y) converges at second order (error
+#                 ratios 3.8 to 4.2), and the flow the particles see (Uinf
+#                 of suspensionFields, at the cell centres) is
+#                 gammaDot y + u'
+#   oneWay        feedback off and no force: the coupled run is bitwise the
+#                 wavyShearFoam run in uniform shear from the same packing
+#                 (u' stays exactly 0, so the engine is never told of a
+#                 change and samples gammaDot y exactly)
+#   restart       a coupled run restarted from a written time matches the
+#                 uninterrupted run bitwise: particles, contact history,
+#                 Uprime, sigmaPRelaxed, the amplitude rows
+#   incompleteFlow
+#                 a latest time whose Uprime is truncated is incomplete: the
+#                 restart sets it aside and writes it anew, bitwise as before
+#   notPeriodic, unknownForce, badCouplingStrain, narrowKernel,
+#   meshNotSpanning, wrongFlow, halfStoredFlow
+#                 one bad input each: a FatalIOError naming the file and the
+#                 entry (or patch), before any time step
+#------------------------------------------------------------------------------
+set -euo pipefail
+
+binDir=$1
+export WM_PROJECT_DIR=$2
+test=$3
+export PATH="$binDir:$PATH"
+export LD_LIBRARY_PATH="$binDir/../lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
+export OMP_NUM_THREADS=1
+export OMP_WAIT_POLICY=PASSIVE
+
+here=$(cd "$(dirname "$0")" && pwd)
+source=$here/tiny
+work=$(mktemp -d "${TMPDIR:-/tmp}/coupledTest.XXXXXX")
+trap 'rm -rf "$work"' EXIT
+solver=suspensionCoupledFoam
+. "$here/../caseTestFunctions.sh"
+
+# Copy the tiny case to $work/$1, mesh it, pack it
+newCase()
+{
+    cp -r "$source" "$work/$1"
+    (
+        cd "$work/$1"
+        makeSuspension -boxOnly > log.makeBox 2>&1
+        blockMesh > log.blockMesh 2>&1
+        makeSuspension > log.makeSuspension 2>&1
+    ) || fail "setting up case $1"
+}
+
+runCoupled()
+{
+    (cd "$work/$1" && suspensionCoupledFoam > log.suspensionCoupledFoam 2>&1) \
+        || fail "suspensionCoupledFoam $1"
+}
+
+values() { python3 "$here/fieldValues.py" "$@"; }
+
+properties=constant/suspensionProperties
+coupling=constant/couplingProperties
+control=system/controlDict
+
+case "$test" in
+run)
+    newCase a
+    runCoupled a
+    log=$work/a/log.suspensionCoupledFoam
+    [ "$(grep -c '^coupling ' "$log")" -eq 11 ] || fail "not 11 coupling lines"
+    awk '/^coupling / {
+            for (i = 1; i < NF; ++i) {
+                if ($i == "residual" && $(i + 1) > 1e-10) bad = "residual " $(i + 1)
+                if ($i == "to" && $(i + 1) > 1e-13) bad = "conservation " $(i + 1)
+            }
+         } END { if (bad) { print bad; exit 1 } }' "$log" \
+        || fail "the momentum balance or the stress conservation"
+    rows=$(grep -vc '^#' "$work/a/postProcessing/coupling/0/amplitude.dat")
+    [ "$rows" -eq 10 ] || fail "amplitude.dat has $rows rows, not 10"
+    for t in 0.05 0.1; do
+        for f in U Uprime sigmaP sigmaPRelaxed alphaP; do
+            [ -f "$work/a/$t/$f" ] || fail "no $t/$f"
+        done
+        [ "$(grep -vc '^#' "$work/a/postProcessing/coupling/$t/profile.dat")" -eq 16 ] \
+            || fail "profile.dat of $t has not 16 rows"
+        for f in Uprime sigmaPRelaxed; do
+            grep -q "^ *$f$" "$work/a/$t/uniform/suspensionState" \
+                || fail "the state of $t does not list $f"
+        done
+    done
+    # suspensionPlot draws the coupled flow
+    if /usr/bin/python3 -c "import matplotlib" 2> /dev/null; then
+        suspensionPlot -case "$work/a" > "$work/a/log.plot" 2>&1 || fail "suspensionPlot"
+        for png in coupling amplitude; do
+            f=$work/a/postProcessing/plots/$png.png
+            [ "$(head -c 8 "$f" | od -An -tx1 | tr -d ' \n')" = 89504e470d0a1a0a ] \
+                || fail "suspensionPlot wrote no $png.png"
+        done
+    fi
+    # phi integrates to the packing's (the spread volumes are conserved)
+    awk '!/^#/ { s += $9; n++ } END { if (s/n < 0.299 || s/n > 0.301) exit 1 }' \
+        "$work/a/postProcessing/coupling/0.1/profile.dat" \
+        || fail "the mean of phi across y is not 0.3"
+    ;;
+
+particleFree)
+    errors=""
+    for n in 8 16 32; do
+        cp -r "$source" "$work/n$n"
+        sed -i "s/(1 16 1)/(1 $n 1)/" "$work/n$n/system/blockMeshDict"
+        setEntry n$n $coupling feedback off
+        setEntry n$n $control endTime 0.01
+        setEntry n$n $control writeInterval 1
+        setEntry n$n $control writePrecision 17     # Uinf, written by suspensionFields
+        (
+            cd "$work/n$n"
+            makeSuspension -boxOnly > log.makeBox 2>&1
+            blockMesh > log.blockMesh 2>&1
+            makeSuspension > log.makeSuspension 2>&1
+        ) || fail "setting up n$n"
+        runCoupled n$n
+        Ly=$(awk '$1 == "Ly" { sub(/;/, "", $2); print $2 }' "$work/n$n/constant/particleBox")
+        F=$(awk '$1 == "amplitude" { sub(/;/, "", $2); print $2 }' "$work/n$n/$coupling")
+        err=$(paste <(values "$work/n$n/0.01/Uprime" 0) \
+                    <(values "$work/n$n/0.01/Uinf" 0) \
+            | awk -v n=$n -v Ly=$Ly -v F=$F '
+                { j = NR - 1; y = (j + 0.5)*Ly/n; k = 2*3.14159265358979324/Ly
+                  e = $1 - F/(k*k)*sin(k*y); if (e < 0) e = -e; if (e > m) m = e
+                  d = $2 - (y + $1); if (d < 0) d = -d; if (d > dmax) dmax = d }
+                END { if (dmax > 1e-10) { print "seen " dmax; exit 1 } print m }') \
+            || fail "the particles do not see gammaDot y + u' on $n cells: $err"
+        errors="$errors $err"
+    done
+    echo "max |u' - F/(k^2) sin(ky)| on 8, 16, 32 cells:$errors"
+    echo "$errors" | awk '{ r1 = $1/$2; r2 = $2/$3; print "ratios", r1, r2
+        if (r1 < 3.8 || r1 > 4.2 || r2 < 3.8 || r2 > 4.2) exit 1 }' \
+        || fail "not second order:$errors"
+    ;;
+
+oneWay)
+    newCase coupled
+    setEntry coupled $coupling feedback off
+    foamDictionary -entry bodyForce -remove "$work/coupled/$coupling" > /dev/null
+    foamDictionary -entry bodyForce -set "{ type none; }" "$work/coupled/$coupling" > /dev/null
+    cp -r "$work/coupled" "$work/oneWay"
+    rm -f "$work"/oneWay/log.*
+    setEntry oneWay $control application wavyShearFoam
+    foamDictionary -entry functions -set "{}" "$work/oneWay/$control" > /dev/null
+    foamDictionary -entry ambientFlow -set "{ type uniformShear; shearRate 1; }" \
+        "$work/oneWay/$properties" > /dev/null
+    runCoupled coupled
+    (cd "$work/oneWay" && wavyShearFoam > log.wavyShearFoam 2>&1) || fail "wavyShearFoam"
+    for f in x U omega F T S; do
+        cmp -s "$work/coupled/0.1/lagrangian/suspension/$f" \
+               "$work/oneWay/0.1/lagrangian/suspension/$f" \
+            || fail "lagrangian/suspension/$f differs from the one-way run"
+    done
+    values "$work/coupled/0.1/Uprime" 0 2>/dev/null | awk '$1 != 0 { exit 1 }' \
+        || grep -q "uniform (0 0 0)" "$work/coupled/0.1/Uprime" \
+        || fail "u' is not exactly 0"
+    ;;
+
+restart|incompleteFlow)
+    newCase a
+    runCoupled a
+    mkdir "$work/b"
+    cp -r "$work/a/constant" "$work/a/system" "$work/a/0" "$work/a/0.05" "$work/b"
+    if [ "$test" = incompleteFlow ]; then
+        cp -r "$work/a/0.1" "$work/b"
+        head -c 400 "$work/a/0.1/Uprime" > "$work/b/0.1/Uprime"
+    fi
+    runCoupled b
+    log=$work/b/log.suspensionCoupledFoam
+    grep -q "stored suspension" "$log" || fail "the restart did not read the stored suspension"
+    if [ "$test" = incompleteFlow ]; then
+        grep -q "Uprime" "$log" && grep -q "0.1.incomplete" "$log" \
+            || fail "the truncated Uprime did not set 0.1 aside"
+        [ -d "$work/b/0.1.incomplete" ] || fail "no 0.1.incomplete"
+    fi
+    for f in lagrangian/suspension/x lagrangian/suspension/U \
+        lagrangian/suspensionContacts/xiT Uprime sigmaPRelaxed; do
+        cmp -s "$work/a/0.1/$f" "$work/b/0.1/$f" || fail "0.1/$f differs"
+    done
+    diff <(awk '!/^#/ && $1 > 0.05' "$work/a/postProcessing/coupling/0/amplitude.dat") \
+         <(awk '!/^#/' "$work/b/postProcessing/coupling/0.05/amplitude.dat") > /dev/null \
+        || fail "amplitude.dat rows differ"
+    ;;
+
+notPeriodic)
+    cp -r "$source" "$work/c"
+    python3 - "$work/c/system/blockMeshDict" <<'PY'
+import re, sys
+p = sys.argv[1]
+s = open(p).read()
+s = re.sub(r"boundary\s*\(.*?\n\);", "boundary\n(\n);\n\ndefaultPatch { name box; type patch; }", s, flags=re.S)
+open(p, "w").write(s)
+PY
+    (cd "$work/c" && makeSuspension -boxOnly > log.makeBox 2>&1 && blockMesh > log.blockMesh 2>&1) \
+        || fail "meshing"
+    expectInputError c "polyMesh/boundary" "Patch 'box'" "type patch"
+    ;;
+
+unknownForce)
+    newCase c
+    setEntry c $coupling bodyForce/type wobbly
+    expectInputError c "couplingProperties" "wobbly" "kolmogorov"
+    ;;
+
+badCouplingStrain)
+    newCase c
+    setEntry c $coupling couplingStrain 0
+    expectInputError c "couplingProperties" "couplingStrain"
+    ;;
+
+narrowKernel)
+    newCase c
+    setEntry c $coupling coarseGraining/width 2
+    expectInputError c "couplingProperties" "width" "2.8"
+    ;;
+
+meshNotSpanning)
+    cp -r "$source" "$work/c"
+    (cd "$work/c" && makeSuspension -boxOnly > log.makeBox 2>&1) || fail "box"
+    sed -i 's/^scale .*/scale   0.9;/' "$work/c/system/blockMeshDict"
+    (cd "$work/c" && blockMesh > log.blockMesh 2>&1) || fail "meshing"
+    expectInputError c "mesh bounds" "particle box"
+    ;;
+
+wrongFlow)
+    newCase c
+    foamDictionary -entry ambientFlow -set "{ type uniformShear; shearRate 1; }" \
+        "$work/c/$properties" > /dev/null
+    expectInputError c "suspensionProperties" "ambientFlow" "meshField"
+    ;;
+
+halfStoredFlow)
+    newCase a
+    setEntry a $control endTime 0.05
+    runCoupled a
+    rm "$work/a/0.05/sigmaPRelaxed"
+    # the time is no longer complete; take it as made by hand
+    foamDictionary -entry files -remove "$work/a/0.05/uniform/suspensionState" > /dev/null
+    setEntry a $control endTime 0.1
+    if (cd "$work/a" && suspensionCoupledFoam > log.second 2>&1); then
+        fail "a time with Uprime but no sigmaPRelaxed was accepted"
+    fi
+    grep -q "FOAM FATAL IO ERROR" "$work/a/log.second" || fail "no FatalIOError"
+    grep -qF "sigmaPRelaxed" "$work/a/log.second" || fail "the error does not name sigmaPRelaxed"
+    ;;
+
+*)
+    echo "coupledTest.sh: unknown test $test" >&2
+    exit 2
+    ;;
+esac
+
+echo "PASSED ($test)"
