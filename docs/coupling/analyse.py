@@ -1,11 +1,16 @@
 #!/usr/bin/python3
-"""analyse.py WORK OUT: the tables and plots of docs/coupling.md from the
-cases of perturbation.sh (WORK/<case>), written to OUT:
+"""analyse.py WORK OUT [TAG]: the tables and plots of docs/coupling.md from
+the cases of perturbation.sh (WORK/<case>), written to OUT (each name with
+TAG before its extension: perturbation<TAG>.csv, ...):
 
   perturbation.csv  per case: phi, F, the steady mean amplitude A of u'
                     and its error, etaEff = F/(eta0 k^2 A), etaDirect =
                     1 + <sigmaPk>/(eta0 k <A>) (the particles' own stress
-                    mode over the shear-rate mode they see), and per phi the
+                    mode over the shear-rate mode they see), the run's own
+                    bulk etaR (rheologySummary.dat), the RMS deviation of
+                    the shear rate across y beyond the forced mode (what
+                    the particle-stress noise drives), the steady mean of
+                    phik/phi (migration), and per phi the
                     uniform-shear etaR (rheologySummary.dat) and both
                     extrapolated to zero amplitude (linear in A^2)
   migration.csv     the volume-fraction mode phik/phi against strain
@@ -14,9 +19,10 @@ cases of perturbation.sh (WORK/<case>), written to OUT:
   migration.png     phik/phi against strain
   momentum.csv      per case and row across y: the steady mean of the total
                     shear stress tauInstant = eta0 dU/dy + Sigma_p,xy (the
-                    instantaneous particle stress) with its error, and the
-                    exact value tauExact (profile.dat of the write times);
-                    chi2 per row of the difference
+                    instantaneous particle stress) with its error (blocks of
+                    PROFILE_BLOCK = 10 strain of the profiles written every
+                    2), and the exact value <tauInstant> - (int f - mean)
+                    (profile.dat); chi2 per row of the difference printed
   momentum.png      both across y
 
 Steady state: strain >= CUT (10; the relaxation of the coupling strain 1 and
@@ -32,6 +38,7 @@ import sys
 
 CUT = 10.0
 BLOCK = 5.0
+PROFILE_BLOCK = 10.0
 
 
 def table(path):
@@ -81,6 +88,11 @@ def meanErr(b):
     return m, s/math.sqrt(len(b))
 
 
+def err(q):
+    """The name of the error of quantity q: dEtaEff of etaEff"""
+    return "d" + q[0].upper() + q[1:]
+
+
 def summary(path):
     for line in open(path):
         w = line.split()
@@ -89,7 +101,11 @@ def summary(path):
     raise ValueError("no etaR row in " + path)
 
 
-def main(work, out):
+def main(work, out, tag=""):
+    def outPath(name):
+        stem, ext = os.path.splitext(name)
+        return os.path.join(out, stem + tag + ext)
+
     cases = sorted(d for d in os.listdir(work)
                    if re.match(r"phi[0-9.]+_(F[0-9.]+|uniform)$", d))
     rows, uniform, migration = [], {}, {}
@@ -109,10 +125,34 @@ def main(work, out):
         bA = blocks(t, a["A"])
         bS = blocks(t, a["sigmaPk"])
         A, dA = meanErr(bA)
-        eta = F/(k*k*A)
+        nan = float("nan")
+        eta = F/(k*k*A) if F != 0 else nan
         direct = [1 + s/(k*x) for s, x in zip(bS, bA)]
-        etaD, dEtaD = meanErr(direct)
+        etaD, dEtaD = meanErr(direct) if F != 0 else (nan, nan)
+        # the coupled run's own bulk etaR, and the shear rate's deviation
+        # across y from gammaDot beyond the forced mode (RMS over the rows of
+        # the profiles after CUT): what the stress noise drives
+        sdirs = [d for d in os.listdir(os.path.join(post, "rheology"))
+                 if os.path.isfile(os.path.join(post, "rheology", d,
+                                                "rheologySummary.dat"))]
+        bulk = summary(os.path.join(post, "rheology", max(sdirs, key=float),
+                                    "rheologySummary.dat"))
+        cdir = os.path.join(post, "coupling")
+        dev = []
+        for d in os.listdir(cdir):
+            f = os.path.join(cdir, d, "profile.dat")
+            if os.path.isfile(f) and float(d) > CUT:
+                p = table(f)
+                n = len(p["y"])
+                ck = 2*sum(r*math.cos(k*y) for r, y in zip(p["shearRate"], p["y"]))/n
+                dev += [r - 1 - ck*math.cos(k*y)
+                        for r, y in zip(p["shearRate"], p["y"])]
+        noise = math.sqrt(sum(x*x for x in dev)/len(dev)) if dev else float("nan")
+        migr, dMigr = meanErr(blocks(t, [x/phi for x in a["phik"]]))
         rows.append({"case": c, "phi": phi, "F": F, "k": k, "A": A, "dA": dA,
+                     "phikRel": migr, "dPhikRel": dMigr,
+                     "etaRBulk": bulk[0], "dEtaRBulk": bulk[1],
+                     "rateNoise": noise,
                      "etaEff": eta, "dEtaEff": eta*dA/A,
                      "etaDirect": etaD, "dEtaDirect": dEtaD,
                      "blocks": len(bA), "strain": t[-1]})
@@ -121,7 +161,8 @@ def main(work, out):
     # zero-amplitude extrapolation, linear in A^2, per phi
     ext = {}
     for phi in sorted({r["phi"] for r in rows}):
-        r = sorted((x for x in rows if x["phi"] == phi), key=lambda x: x["A"])
+        r = sorted((x for x in rows if x["phi"] == phi and x["F"] != 0),
+                   key=lambda x: x["A"])
         if len(r) < 2:
             continue
         lo, hi = r[0], r[-1]
@@ -132,13 +173,14 @@ def main(work, out):
             e[q] = lo[q] - slope*a2
             # errors of the two ends, independent
             w1, w2 = b2/(b2 - a2), a2/(b2 - a2)
-            e["d" + q] = math.hypot(w1*lo["d" + q], w2*hi["d" + q])
+            e[err(q)] = math.hypot(w1*lo[err(q)], w2*hi[err(q)])
         ext[phi] = e
 
-    with open(os.path.join(out, "perturbation.csv"), "w", newline="") as f:
+    with open(outPath("perturbation.csv"), "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(["case", "phi", "F", "k", "strain", "blocks", "A", "dA",
                     "etaEff", "dEtaEff", "etaDirect", "dEtaDirect",
+                    "etaRBulk", "dEtaRBulk", "rateNoise", "phikRel", "dPhikRel",
                     "etaEff0", "dEtaEff0", "etaDirect0", "dEtaDirect0",
                     "etaRUniform", "dEtaRUniform", "uniformTrusted"])
         for r in rows:
@@ -147,13 +189,14 @@ def main(work, out):
             w.writerow([r["case"], r["phi"], r["F"], "%.6g" % r["k"],
                         r["strain"], r["blocks"]]
                        + ["%.4g" % r[q] for q in ("A", "dA", "etaEff",
-                          "dEtaEff", "etaDirect", "dEtaDirect")]
+                          "dEtaEff", "etaDirect", "dEtaDirect", "etaRBulk",
+                          "dEtaRBulk", "rateNoise", "phikRel", "dPhikRel")]
                        + ["%.4g" % e.get(q, float("nan")) for q in
-                          ("etaEff", "detaEff", "etaDirect", "detaDirect")]
+                          ("etaEff", "dEtaEff", "etaDirect", "dEtaDirect")]
                        + ["%.4g" % u[0], "%.4g" % u[1],
                           "yes" if u[2] else "no"])
 
-    with open(os.path.join(out, "migration.csv"), "w", newline="") as f:
+    with open(outPath("migration.csv"), "w", newline="") as f:
         w = csv.writer(f)
         names = sorted(migration)
         w.writerow(["strain"] + ["phik/phi " + n for n in names])
@@ -174,16 +217,30 @@ def main(work, out):
                            os.path.join(cdir, d, "profile.dat")))
         profs = [table(os.path.join(cdir, d, "profile.dat"))
                  for t, d in times if t > CUT]
+        ptimes = [t for t, d in times if t > CUT]
         if len(profs) < 2:
             continue
         y = profs[0]["y"]
+        # tauExact of a profile is <tau> - (int f - mean): the mean of the
+        # instantaneous total stress in place of <tau> (the relaxed one's
+        # mean does not act, and lags)
+        def exact(p):
+            shift = (sum(p["tauInstant"]) - sum(p["tau"]))/len(p["tau"])
+            return [x + shift for x in p["tauExact"]]
+        exacts = [exact(p) for p in profs]
+        # error bars: blocks of PROFILE_BLOCK strain (u' and the relaxed
+        # stress are correlated over the coupling strain)
         rowsM = []
         for j in range(len(y)):
-            m, e = meanErr([p["tauInstant"][j] for p in profs])
-            ex = sum(p["tauExact"][j] for p in profs)/len(profs)
+            b = {}
+            for t, p in zip(ptimes, profs):
+                b.setdefault(int((t - CUT - 1e-9)//PROFILE_BLOCK), []).append(
+                    p["tauInstant"][j])
+            m, e = meanErr([sum(v)/len(v) for k, v in sorted(b.items())])
+            ex = sum(x[j] for x in exacts)/len(exacts)
             rowsM.append((y[j], m, e, ex))
         momentum[c] = (rowsM, len(profs))
-    with open(os.path.join(out, "momentum.csv"), "w", newline="") as f:
+    with open(outPath("momentum.csv"), "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(["case", "profiles", "y", "tauInstant", "dTauInstant",
                     "tauExact"])
@@ -204,7 +261,7 @@ def main(work, out):
     fig, axes = plt.subplots(1, len(ext) or 1, figsize=(5*max(len(ext), 1), 4))
     axes = axes if hasattr(axes, "__len__") else [axes]
     for ax, phi in zip(axes, sorted(ext)):
-        r = [x for x in rows if x["phi"] == phi]
+        r = [x for x in rows if x["phi"] == phi and x["F"] != 0]
         A2 = [x["A"]**2 for x in r]
         ax.errorbar(A2, [x["etaEff"] for x in r], [x["dEtaEff"] for x in r],
                     fmt="o", label="etaEff = F/(k^2 A)")
@@ -212,9 +269,9 @@ def main(work, out):
                     [x["dEtaDirect"] for x in r], fmt="s",
                     label="etaDirect = 1 + sigma_k/(k A)")
         e = ext[phi]
-        ax.errorbar([0], [e["etaEff"]], [e["detaEff"]], fmt="o", mfc="none",
+        ax.errorbar([0], [e["etaEff"]], [e["dEtaEff"]], fmt="o", mfc="none",
                     color="C0")
-        ax.errorbar([0], [e["etaDirect"]], [e["detaDirect"]], fmt="s",
+        ax.errorbar([0], [e["etaDirect"]], [e["dEtaDirect"]], fmt="s",
                     mfc="none", color="C1")
         for q, col in (("etaEff", "C0"), ("etaDirect", "C1")):
             ax.plot([0] + A2, [e[q]] + [x[q] for x in r], ":", color=col)
@@ -227,7 +284,7 @@ def main(work, out):
         ax.set_title("phi = %g, N = 500" % phi)
         ax.legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(os.path.join(out, "perturbation.png"), dpi=100)
+    fig.savefig(outPath("perturbation.png"), dpi=100)
 
     fig, ax = plt.subplots(figsize=(6, 4))
     for n in sorted(migration):
@@ -238,7 +295,7 @@ def main(work, out):
     ax.set_ylabel("phi_k/phi (cos mode of phi)")
     ax.legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(os.path.join(out, "migration.png"), dpi=100)
+    fig.savefig(outPath("migration.png"), dpi=100)
     if momentum:
         fig, axes = plt.subplots(1, len(momentum),
                                  figsize=(3.2*len(momentum), 4), sharey=True)
@@ -255,11 +312,11 @@ def main(work, out):
         axes[0].set_ylabel("y")
         axes[0].legend(fontsize=7)
         fig.tight_layout()
-        fig.savefig(os.path.join(out, "momentum.png"), dpi=100)
+        fig.savefig(outPath("momentum.png"), dpi=100)
     for name in ("perturbation.csv", "migration.csv", "momentum.csv",
                  "perturbation.png", "migration.png", "momentum.png"):
-        print(os.path.join(out, name))
+        print(outPath(name))
 
 
 if __name__ == "__main__":
-    main(sys.argv[1], sys.argv[2])
+    main(*sys.argv[1:4])

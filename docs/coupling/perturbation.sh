@@ -9,6 +9,7 @@
 #
 # STRAIN (100) strain units each, COUPLING_STRAIN (10) the relaxation strain,
 # CASES a list of name:phi:F (F = uniform: the one-way run) instead of the six,
+# TAG a suffix of the names of the tables and plots (perturbation$TAG.csv),
 # a profile every 2 strain units. Runs the cases two at a time (one thread each), then
 # docs/coupling/analyse.py writes perturbation.csv, migration.csv and the
 # plots beside this script. A case already run (its log ends with End) is
@@ -69,4 +70,4 @@ for c in $cases; do
 done
 printf '%s\n' $names | xargs -P "${JOBS:-2}" -I{} bash -c 'run {}'
 
-"$here/analyse.py" "$work" "$here"
+"$here/analyse.py" "$work" "$here" "${TAG:-}"

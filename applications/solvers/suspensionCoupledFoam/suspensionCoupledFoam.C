@@ -39,12 +39,16 @@ Description
       3. the stress that acts relaxes towards the instantaneous one over
          the coupling strain gammaDot tau (the particle stress is noisy):
          sigmaPRelaxed += (1 - exp(-deltaT/tau)) (sigmaP - sigmaPRelaxed);
+         only its variation across the box acts, and its mean is set to the
+         instantaneous mean (the bulk particle stress of eq. 8), so that the
+         profiles' total stress is the bulk one, not one that lags;
       4. u' is solved (feedback off: from f alone, the particle-free
          fluid);
       5. the particles' flow (ambientFlow meshField on Uprime) takes u'
          and the engine continues in it (suspensionCloud::correctFlow).
-    The log reports, each step, how much u' changed, the residual of the
-    discrete momentum balance, how well the spread stress is conserved and
+    The log reports, each step, how much u' changed, the budget of the
+    balance (the largest viscous, particle and body forces over the cells
+    and the residual of the discrete balance relative to its source), how well the spread stress is conserved and
     the mean particle shear stress; at the end, the wall seconds of the
     particles' steps and of the mesh side (the coarse-graining, with the
     per-particle stresslets it needs: one more force evaluation; the
@@ -313,6 +317,7 @@ int main(int argc, char *argv[])
         sigmaPRelaxed +=
             (1 - std::exp(-runTime.deltaTValue()/couplingStrain))
            *(sigmaP - sigmaPRelaxed);
+        sigmaPRelaxed += mean(sigmaP) - mean(sigmaPRelaxed);
         times.add(times.coarseGraining);
 
         #include "UEqn.H"
