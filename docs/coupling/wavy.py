@@ -1,6 +1,6 @@
 #!/usr/bin/python3
-"""wavy.py WORK OUT: the back-reaction of Table 3 YW (wavy.sh) as OUT/wavy.csv
-and OUT/wavy.png.
+"""wavy.py WORK OUT [TAG]: the back-reaction of Table 3 YW (wavy.sh) as
+OUT/wavy<TAG>.csv and OUT/wavy<TAG>.png.
 
   wavy.csv   per run: the steady etaR of rheologySummary.dat (error bar, and
              whether it is trusted), the mean of etaR after the start-up cut
@@ -19,6 +19,7 @@ strain (standard deviation of the block means over sqrt(blocks - 1)).
 import csv
 import math
 import os
+import re
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -57,7 +58,7 @@ def profiles(post, name, column):
     return y, [sum(p[column[1]][j] for p in ps)/len(ps) for j in range(len(y))], len(ps)
 
 
-def main(work, out):
+def main(work, out, tag=""):
     rows, curves = [], {}
     for c in ("imposed", "coupled"):
         post = os.path.join(work, c, "postProcessing")
@@ -72,7 +73,9 @@ def main(work, out):
         k = 2*math.pi/Ly
         y, ux, nP = profiles(post, "profiles", ("profiles.dat", "Ux"))
         Ap = 2*sum((u - yy)*math.sin(k*yy) for u, yy in zip(ux, y))/len(y)
-        r = {"run": c, "N": 1024, "Ly": Ly, "etaR": m, "dEtaR": e,
+        N = int(re.search(r"nParticles\s+(\d+)", open(os.path.join(
+            work, c, "constant", "suspensionProperties")).read()).group(1))
+        r = {"run": c, "N": N, "Ly": Ly, "etaR": m, "dEtaR": e,
              "trusted": trusted, "strain": rheo["Time"][-1],
              "etaRMean": sum(v for t, v in zip(rheo["Time"], rheo["etaR"])
                              if t > CUT)/max(1, sum(1 for t in rheo["Time"] if t > CUT)),
@@ -90,7 +93,7 @@ def main(work, out):
         rows.append(r)
         curves[c] = (rheo["Time"], rheo["etaR"], y, ux, yr, rate)
 
-    with open(os.path.join(out, "wavy.csv"), "w", newline="") as f:
+    with open(os.path.join(out, "wavy" + tag + ".csv"), "w", newline="") as f:
         w = csv.writer(f)
         keys = ["run", "N", "Ly", "strain", "etaR", "dEtaR", "trusted",
                 "etaRMean", "A", "dA", "Ap", "rateMin", "rateMax", "profiles"]
@@ -125,10 +128,10 @@ def main(work, out):
     a4.set_ylabel("wave amplitude [gammaDot a0]")
     a4.legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(os.path.join(out, "wavy.png"), dpi=100)
-    print(os.path.join(out, "wavy.csv"))
-    print(os.path.join(out, "wavy.png"))
+    fig.savefig(os.path.join(out, "wavy" + tag + ".png"), dpi=100)
+    print(os.path.join(out, "wavy" + tag + ".csv"))
+    print(os.path.join(out, "wavy" + tag + ".png"))
 
 
 if __name__ == "__main__":
-    main(sys.argv[1], sys.argv[2])
+    main(*sys.argv[1:4])

@@ -11,15 +11,17 @@
 #
 #   docs/coupling/wavy.sh [workDir]      (default: /tmp/wavy)
 #
-# STRAIN (4) strain units each, the two runs side by side (one thread each),
-# restartable (a run continues from its latest write). Then
-# docs/coupling/wavy.py writes wavy.csv and wavy.png beside this script.
+# STRAIN (4) strain units each, N (1024) particles, the two runs side by
+# side (one thread each), restartable (a run continues from its latest
+# write). Then docs/coupling/wavy.py writes wavy<TAG>.csv and wavy<TAG>.png
+# beside this script (TAG: empty, or -N<N> for another N).
 #------------------------------------------------------------------------------
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
 work=${1:-/tmp/wavy}
 strain=${STRAIN:-4}
+nParticles=${N:-1024}
 . "$root/etc/bashrc"
 export OMP_NUM_THREADS=1 OMP_WAIT_POLICY=PASSIVE
 mkdir -p "$work"
@@ -31,7 +33,7 @@ setUp()
     mkdir -p "$c"
     cp -r "$root/tutorials/wavyShear/YW/constant" "$root/tutorials/wavyShear/YW/system" "$c"
     local p=$c/constant/suspensionProperties
-    foamDictionary -entry population/nParticles -set 1024 "$p" > /dev/null
+    foamDictionary -entry population/nParticles -set "$nParticles" "$p" > /dev/null
     foamDictionary -entry electroChemical/attraction/cutoffGap -set 0.5 "$p" > /dev/null
     foamDictionary -entry integration/safety -set 0.1 "$p" > /dev/null
     local cd=$c/system/controlDict
@@ -78,4 +80,6 @@ for c in imposed coupled; do
 done
 printf '%s\n' imposed coupled | xargs -P 2 -I{} bash -c 'run {}'
 
-"$here/wavy.py" "$work" "$here"
+tag=""
+[ "$nParticles" = 1024 ] || tag=-N$nParticles
+"$here/wavy.py" "$work" "$here" "$tag"
