@@ -10,7 +10,8 @@ TAG before its extension: perturbation<TAG>.csv, ...):
                     bulk etaR (rheologySummary.dat), the RMS deviation of
                     the shear rate across y beyond the forced mode (what
                     the particle-stress noise drives), the steady mean of
-                    phik/phi (migration), and per phi the
+                    phik/phi (migration) and its value at the start (the
+                    packing's own), and per phi the
                     uniform-shear etaR (rheologySummary.dat) and both
                     extrapolated to zero amplitude (linear in A^2)
   migration.csv     the volume-fraction mode phik/phi against strain
@@ -25,10 +26,12 @@ TAG before its extension: perturbation<TAG>.csv, ...):
                     (profile.dat); chi2 per row of the difference printed
   momentum.png      both across y
 
-Steady state: strain >= CUT (10; the relaxation of the coupling strain 1 and
-of the microstructure, a few strains, lie before it), error bars from the
-means of blocks of BLOCK (5) strains: standard deviation of the block
-means over sqrt(blocks - 1).
+Steady state: strain >= CUT (20: two coupling strains of 10), error bars
+from the means of blocks of BLOCK (10) strain units: standard deviation of
+the block means over sqrt(blocks - 1). The bulk and uniform-shear etaR are
+those of rheologySummary.dat (its MSER-5 start-up cut, blocks of two
+correlation strains). A case named ..._F<F>off ran with feedback off (the
+particles in the particle-free fluid's wave): its etaEff is that fluid's.
 """
 import csv
 import math
@@ -36,8 +39,8 @@ import os
 import re
 import sys
 
-CUT = 10.0
-BLOCK = 5.0
+CUT = 20.0
+BLOCK = 10.0
 PROFILE_BLOCK = 10.0
 
 
@@ -107,7 +110,7 @@ def main(work, out, tag=""):
         return os.path.join(out, stem + tag + ext)
 
     cases = sorted(d for d in os.listdir(work)
-                   if re.match(r"phi[0-9.]+_(F[0-9.]+|uniform)$", d))
+                   if re.match(r"phi[0-9.]+_(F[0-9.]+(off)?|uniform)$", d))
     rows, uniform, migration = [], {}, {}
     for c in cases:
         phi = float(re.match(r"phi([0-9.]+)_", c).group(1))
@@ -151,6 +154,8 @@ def main(work, out, tag=""):
         migr, dMigr = meanErr(blocks(t, [x/phi for x in a["phik"]]))
         rows.append({"case": c, "phi": phi, "F": F, "k": k, "A": A, "dA": dA,
                      "phikRel": migr, "dPhikRel": dMigr,
+                     "phikRelStart": a["phik"][0]/phi,
+                     "off": c.endswith("off"),
                      "etaRBulk": bulk[0], "dEtaRBulk": bulk[1],
                      "rateNoise": noise,
                      "etaEff": eta, "dEtaEff": eta*dA/A,
@@ -161,7 +166,8 @@ def main(work, out, tag=""):
     # zero-amplitude extrapolation, linear in A^2, per phi
     ext = {}
     for phi in sorted({r["phi"] for r in rows}):
-        r = sorted((x for x in rows if x["phi"] == phi and x["F"] != 0),
+        r = sorted((x for x in rows
+                    if x["phi"] == phi and x["F"] != 0 and not x["off"]),
                    key=lambda x: x["A"])
         if len(r) < 2:
             continue
@@ -181,6 +187,7 @@ def main(work, out, tag=""):
         w.writerow(["case", "phi", "F", "k", "strain", "blocks", "A", "dA",
                     "etaEff", "dEtaEff", "etaDirect", "dEtaDirect",
                     "etaRBulk", "dEtaRBulk", "rateNoise", "phikRel", "dPhikRel",
+                    "phikRelStart",
                     "etaEff0", "dEtaEff0", "etaDirect0", "dEtaDirect0",
                     "etaRUniform", "dEtaRUniform", "uniformTrusted"])
         for r in rows:
@@ -190,7 +197,8 @@ def main(work, out, tag=""):
                         r["strain"], r["blocks"]]
                        + ["%.4g" % r[q] for q in ("A", "dA", "etaEff",
                           "dEtaEff", "etaDirect", "dEtaDirect", "etaRBulk",
-                          "dEtaRBulk", "rateNoise", "phikRel", "dPhikRel")]
+                          "dEtaRBulk", "rateNoise", "phikRel", "dPhikRel",
+                          "phikRelStart")]
                        + ["%.4g" % e.get(q, float("nan")) for q in
                           ("etaEff", "dEtaEff", "etaDirect", "dEtaDirect")]
                        + ["%.4g" % u[0], "%.4g" % u[1],
@@ -261,7 +269,7 @@ def main(work, out, tag=""):
     fig, axes = plt.subplots(1, len(ext) or 1, figsize=(5*max(len(ext), 1), 4))
     axes = axes if hasattr(axes, "__len__") else [axes]
     for ax, phi in zip(axes, sorted(ext)):
-        r = [x for x in rows if x["phi"] == phi and x["F"] != 0]
+        r = [x for x in rows if x["phi"] == phi and x["F"] != 0 and not x["off"]]
         A2 = [x["A"]**2 for x in r]
         ax.errorbar(A2, [x["etaEff"] for x in r], [x["dEtaEff"] for x in r],
                     fmt="o", label="etaEff = F/(k^2 A)")

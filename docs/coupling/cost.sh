@@ -2,13 +2,13 @@
 #------------------------------------------------------------------------------
 # The cost of the mesh side of suspensionCoupledFoam (docs/coupling.md):
 # tutorials/coupled/kolmogorov at N = 4096 (phi = 0.35; 1 x 32 x 1 cells),
-# 1 strain unit in outer steps of 0.01 (the tutorial's: 2 engine steps and
-# a shorter one each) and of 0.1 (21 engine steps), on THREADS (1)
+# 1 strain unit in outer steps of 0.01 (2 engine steps and a shorter one
+# each) and of 0.1 (the tutorial's: 21 engine steps), on THREADS (1)
 # threads, REPEAT (5) times each, alternated. Prints, per run, the solver's
 # own split of the outer steps' wall seconds (particles; mesh side:
 # coarse-graining with the stresslets it needs, solve, flow update) and
-# appends it to cost.csv beside this script, with the process's CPU seconds
-# and peak RSS (/usr/bin/time -v).
+# writes them to cost.csv beside this script (anew), with the process's CPU
+# seconds and peak RSS (/usr/bin/time -v).
 #
 #   docs/coupling/cost.sh [workDir]      (default: /tmp/couplingCost)
 #
@@ -37,7 +37,7 @@ if [ ! -d "$c/0" ]; then
 fi
 
 csv=$here/cost.csv
-[ -f "$csv" ] || echo "N,threads,outerStep,run,wallOuterSteps,particles,coarseGraining,solve,flowUpdate,meshShare,cpuSeconds,peakRSSMB" > "$csv"
+echo "N,threads,outerStep,run,wallOuterSteps,particles,coarseGraining,solve,flowUpdate,meshShare,cpuSeconds,peakRSSMB" > "$csv"
 for r in $(seq 1 "$repeat"); do
 for outer in 0.01 0.1; do
     rm -rf "$c"/0.* "$c"/[1-9]* "$c/postProcessing"

@@ -13,8 +13,10 @@ OUT/wavy<TAG>.csv and OUT/wavy<TAG>.png.
              <u_x> - y across y (profiles averaged over the written times
              after CUT); the coupled wave's amplitude against strain
 
-Steady means: after CUT (1 strain), error bars from blocks of BLOCK (0.5)
-strain (standard deviation of the block means over sqrt(blocks - 1)).
+Steady means: after CUT (1 strain), error bars from blocks of BLOCK (1)
+strain, two coupling strains (standard deviation of the block means over
+sqrt(blocks - 1)); etaR and its error bar are rheologySummary.dat's (its
+MSER-5 start-up cut, blocks of two correlation strains).
 """
 import csv
 import math
@@ -26,7 +28,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from analyse import table, joined, meanErr  # noqa: E402
 
 CUT = 1.0
-BLOCK = 0.5
+BLOCK = 1.0
 
 
 def blockMeans(t, v):
