@@ -157,6 +157,7 @@ def main(work, out, tag=""):
                      "phikRelStart": a["phik"][0]/phi,
                      "off": c.endswith("off"),
                      "etaRBulk": bulk[0], "dEtaRBulk": bulk[1],
+                     "bulkTrusted": "yes" if bulk[2] else "no",
                      "rateNoise": noise,
                      "etaEff": eta, "dEtaEff": eta*dA/A,
                      "etaDirect": etaD, "dEtaDirect": dEtaD,
@@ -186,8 +187,8 @@ def main(work, out, tag=""):
         w = csv.writer(f)
         w.writerow(["case", "phi", "F", "k", "strain", "blocks", "A", "dA",
                     "etaEff", "dEtaEff", "etaDirect", "dEtaDirect",
-                    "etaRBulk", "dEtaRBulk", "rateNoise", "phikRel", "dPhikRel",
-                    "phikRelStart",
+                    "etaRBulk", "dEtaRBulk", "bulkTrusted", "rateNoise",
+                    "phikRel", "dPhikRel", "phikRelStart",
                     "etaEff0", "dEtaEff0", "etaDirect0", "dEtaDirect0",
                     "etaRUniform", "dEtaRUniform", "uniformTrusted"])
         for r in rows:
@@ -197,8 +198,9 @@ def main(work, out, tag=""):
                         r["strain"], r["blocks"]]
                        + ["%.4g" % r[q] for q in ("A", "dA", "etaEff",
                           "dEtaEff", "etaDirect", "dEtaDirect", "etaRBulk",
-                          "dEtaRBulk", "rateNoise", "phikRel", "dPhikRel",
-                          "phikRelStart")]
+                          "dEtaRBulk")] + [r["bulkTrusted"]]
+                       + ["%.4g" % r[q] for q in ("rateNoise", "phikRel",
+                          "dPhikRel", "phikRelStart")]
                        + ["%.4g" % e.get(q, float("nan")) for q in
                           ("etaEff", "dEtaEff", "etaDirect", "dEtaDirect")]
                        + ["%.4g" % u[0], "%.4g" % u[1],
