@@ -5,6 +5,7 @@
 // out to wrap, an exception of the flow inside a step; a particle outside
 // the box at the start is a set-up error naming the particle
 #include "dynamics/Simulation.H"
+#include "modelTestTools.H"
 #include "flow/ShearFlow.H"
 #include "packing/RandomPacking.H"
 #include "packing/SizeDistribution.H"
@@ -31,13 +32,7 @@ namespace
     //- Lubrication and frictional contacts (Table 1 FR groups)
     ForceModels models()
     {
-        ForceModels m;
-        Lubrication::Params lub;
-        lub.epsilon = 1e-3;
-        lub.deltaLub = 0.05;
-        m.set(Lubrication(lub));
-        m.set(FrictionalContact(FrictionalContact::fromGroups(4e5, 2.0/7.0, 1e-7, 1.0)));
-        return m;
+        return test::lubricatedContacts(0.05, 4e5, 1.0);
     }
 
     //- 60 spheres of radii 1 and 1.4 at phi = 0.45, ids from firstId

@@ -1,6 +1,7 @@
 // The implicit integrators: resistance operator, CG solve, stability and
 // trajectories against independent references
 #include "dynamics/Simulation.H"
+#include "modelTestTools.H"
 #include "flow/ShearFlow.H"
 #include "packing/RandomPacking.H"
 #include "packing/SizeDistribution.H"
@@ -21,14 +22,6 @@ namespace
 {
     const double rho = 1e-3;        // St (eq. 11)
 
-    Lubrication::Params lubricationParams(double epsilon, double deltaLub)
-    {
-        Lubrication::Params lub;
-        lub.epsilon = epsilon;
-        lub.deltaLub = deltaLub;
-        return lub;
-    }
-
     //- 30 random spheres (radii 1 and 1.4, overlaps allowed) in a sheared
     //  box with a wavy flow, lubrication only; random velocities and
     //  random explicit forces F_c in F, T
@@ -43,7 +36,7 @@ namespace
 
         explicit RandomBox(unsigned seed)
         {
-            models.set(Lubrication(lubricationParams(1e-3, 0.5)));
+            models.set(Lubrication(test::lubrication(1e-3, 0.5)));
             box.setTime(0.37);
             std::mt19937 gen(seed);
             std::uniform_real_distribution<double> u(0, 1);
@@ -429,7 +422,7 @@ TEST(Implicit, SqueezeIsStableFarBeyondTheExplicitLimitAndFollowsTheOde)
     // Two spheres pushed together by +-F against Stokes drag and the
     // regularised squeeze resistance, at 100 times the explicit limit
     ForceModels models;
-    models.set(Lubrication(lubricationParams(1e-3, 0.5)));
+    models.set(Lubrication(test::lubrication(1e-3, 0.5)));
     const TimeStepLimits explicitLimits(models, 1.0, 1.0, rho, 1.0);
     ASSERT_EQ(explicitLimits.binding().name, "lubrication");
     const double dt = 100*explicitLimits.binding().value;
@@ -546,7 +539,7 @@ TEST(Implicit, DiluteViscosityAgreesWithVelocityVerlet)
     pp.reach = 0.35;        // the run's: lubrication gap 0.25 + skin 0.1
     const RandomPacking::Result packed = RandomPacking(pp).pack(radii, rho);
     ForceModels models;
-    models.set(Lubrication(lubricationParams(1e-2, 0.25)));
+    models.set(Lubrication(test::lubrication(1e-2, 0.25)));
     models.set(FrictionalContact(FrictionalContact::fromGroups(4e5, 2.0/7.0, 1e-7, 1.0)));
 
     const ShearFlow flow(1.0);
@@ -585,7 +578,7 @@ TEST(Implicit, IndependentOfThreadCount)
     const Vec3 L(side, side, side);
     const ShearFlow flow(1.0, 2.0, 1.0, L.y());
     ForceModels models;
-    models.set(Lubrication(lubricationParams(1e-3, 0.25)));
+    models.set(Lubrication(test::lubrication(1e-3, 0.25)));
     FrictionalContact::Params c = FrictionalContact::fromGroups(4e5, 2.0/7.0, 1e-7, 1.0);
     c.kr = 0.1*c.kn;
     models.set(FrictionalContact(c));
@@ -636,7 +629,7 @@ TEST(Implicit, LubricationGapBoundsTheImplicitStepForSmallEpsilon)
     {
         ForceModels m;
         m.set(FrictionalContact(FrictionalContact::fromGroups(4e5, 2.0/7.0, 1e-7, 0.0)));
-        m.set(Lubrication(lubricationParams(eps, 0.05)));
+        m.set(Lubrication(test::lubrication(eps, 0.05)));
         return m;
     };
     auto limit = [](const TimeStepLimits& l, const std::string& name)

@@ -5,6 +5,7 @@
 // the explicit contact limit; the Lees-Edwards ambient term, the stress,
 // restart and thread counts of a suspension
 #include "dynamics/Simulation.H"
+#include "modelTestTools.H"
 #include "core/Parallel.H"
 #include "flow/ShearFlow.H"
 #include "packing/RandomPacking.H"
@@ -32,22 +33,11 @@ namespace
     using Vec12 = Eigen::Matrix<double, 12, 1>;
     using Mat12 = Lubrication::PairMatrix;
 
-    Lubrication::Params lubricationParams()
-    {
-        Lubrication::Params lub;
-        lub.epsilon = 1e-3;
-        lub.deltaLub = 0.05;
-        return lub;
-    }
-
-    //- Table 1 springs (k_t/k_n = 2/7, gamma_n/k_n = 1e-7) with mu_C, and
-    //  lubrication at the paper's eps, delta_lub
+    //- Table 1 springs with mu_C, and lubrication at the paper's eps,
+    //  delta_lub
     ForceModels tableOne(double muC)
     {
-        ForceModels m;
-        m.set(Lubrication(lubricationParams()));
-        m.set(FrictionalContact(FrictionalContact::fromGroups(kHat, 2.0/7.0, 1e-7, muC)));
-        return m;
+        return test::lubricatedContacts(0.05, kHat, muC);
     }
 
     const FrictionalContact::Params& springs(const ForceModels& m)

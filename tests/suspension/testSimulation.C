@@ -1,5 +1,6 @@
 // The pair loop, the integrator and the bulk stress together
 #include "dynamics/Simulation.H"
+#include "modelTestTools.H"
 #include "core/Parallel.H"
 #include "flow/ShearFlow.H"
 #include "forces/ElectroChemicalScales.H"
@@ -22,10 +23,7 @@ namespace
     ForceModels allModels()
     {
         ForceModels m;
-        Lubrication::Params lub;
-        lub.epsilon = 1e-3;
-        lub.deltaLub = 0.25;
-        m.set(Lubrication(lub));
+        m.set(Lubrication(test::lubrication(1e-3, 0.25)));
         FrictionalContact::Params c =
             FrictionalContact::fromGroups(4e5, 2.0/7.0, 1e-7, 1.0);
         c.kr = 0.1*c.kn;
@@ -307,10 +305,7 @@ TEST(Simulation, SqueezeStepLimitIsTheStabilityEdge)
     // Two touching spheres, lubrication only: the explicit scheme is
     // stable just below the computed limit and unstable just above it
     ForceModels models;
-    Lubrication::Params lub;
-    lub.epsilon = 1e-2;
-    lub.deltaLub = 0.5;
-    models.set(Lubrication(lub));
+    models.set(Lubrication(test::lubrication(1e-2, 0.5)));
     const TimeStepLimits limits(models, 1.0, 1.0, rho, 1.0);
     EXPECT_EQ(limits.binding().name, "lubrication");
 
@@ -428,17 +423,7 @@ TEST(Simulation, ChangedFlowContinuesAsARestartInTheNewFlow)
     // lubricationGap = 25 epsilon/max|grad U| in uniform shear, not in the
     // wave; the run continues with the integrator a run started there has
     const Vec3 L(12, 12, 12);
-    ForceModels stiffFrictionless;
-    {
-        Lubrication::Params lub;
-        lub.epsilon = 1e-3;
-        lub.deltaLub = 0.25;
-        stiffFrictionless.set(Lubrication(lub));
-        stiffFrictionless.set
-        (
-            FrictionalContact(FrictionalContact::fromGroups(5e6, 2.0/7.0, 1e-7, 0))
-        );
-    }
+    const ForceModels stiffFrictionless = test::lubricatedContacts(0.25, 5e6, 0);
     const std::pair<Integrator, bool> cases[] =
     {
         {Integrator::velocityVerlet, false},
