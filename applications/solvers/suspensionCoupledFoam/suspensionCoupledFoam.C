@@ -176,11 +176,12 @@ bool storedFlow(IOobject& U, IOobject& sigma)
 }
 
 
-//- The particles' flow must be the solved one: ambientFlow meshField on u'
+//- The particles' flow must be the solved one, ambientFlow meshField (on
+//  another field than U it would have stopped already: the mesh holds
+//  no other)
 void checkFlow(const suspensionCloud& particles, const volVectorField& U)
 {
-    const meshField* flow = isA<meshField>(particles.flow());
-    if (!flow || flow->fieldName() != U.name())
+    if (!isA<meshField>(particles.flow()))
     {
         FatalIOErrorInFunction(particles.properties().ambientFlowDict())
             << "suspensionCoupledFoam solves the ambient flow: the entry"
