@@ -512,7 +512,7 @@ TEST_F(AmbientFlowFields, ParticleOutsideTheMeshStopsTheRunNamingIt)
         #pragma omp parallel for num_threads(2)
         for (std::size_t i = 0; i < p.size(); ++i)
         {
-            f[i] = engine.sample(p.x[i]);
+            f[i] = engine.sample(p.x[i], 1.0);
         }
         return f;
     };

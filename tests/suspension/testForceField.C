@@ -665,7 +665,7 @@ namespace
 
     //- n random spheres of radii 1.0 and 1.4 (alternating), random
     //  velocities about the flow and spins; overlaps allowed
-    Particles randomParticles(const Vec3& L, int n, const AmbientFlow& flow, unsigned seed)
+    Particles randomParticles(const Vec3& L, int n, const ShearFlow& flow, unsigned seed)
     {
         std::mt19937 gen(seed);
         std::uniform_real_distribution<double> u(0, 1);
@@ -702,7 +702,7 @@ namespace
             search({field.nearGap(), skin, stencil, field.farGap()}),
             near()
         {
-            box.setTime(0.61);
+            box.setStrain(box.shearRate()*(0.61));
             search.rebuild(particles, box, near);
             for (int step = 0; step < 2; ++step)
             {

@@ -37,7 +37,7 @@ namespace
         explicit RandomBox(unsigned seed)
         {
             models.set(Lubrication(test::lubrication(1e-3, 0.5)));
-            box.setTime(0.37);
+            box.setStrain(box.shearRate()*(0.37));
             std::mt19937 gen(seed);
             std::uniform_real_distribution<double> u(0, 1);
             for (int i = 0; i < 30; ++i)
@@ -208,7 +208,7 @@ namespace
         evaluate(0);
         for (int k = 0; k < steps; ++k)
         {
-            implicit.solve(p, forces.ambient(), dt);
+            implicit.solve(p, forces.ambient(), 0, dt);
             ImplicitEuler::move(p, box, dt);
             evaluate(dt);
             h.push_back(gap(p));
@@ -301,7 +301,7 @@ TEST(Implicit, PreconditionerInvertsTheDiagonalBlocksWithContacts)
             s.box.minimumImage(r);
             contacts.push_back
             ({
-                i, j, r.normalized(), s.p.a[i], s.p.a[j], Vec3::Zero(),
+                i, j, r.normalized(), s.p.a[i], s.p.a[j], Vec3::Zero(), r.y(),
                 ContactStiffness{4e3, 0.7, (k % 2) ? 1e3 : 0.0, 3e2}
             });
         }
@@ -397,7 +397,7 @@ TEST(Implicit, SolvedVelocitiesSatisfyTheDenseResistanceEquations)
         ImplicitEuler implicit(s.models, inertia, cg);
         ForceSummary summary;
         implicit.evaluate(s.p, s.box, s.ambient, s.pairs, {}, summary);
-        implicit.solve(s.p, s.ambient, dt);
+        implicit.solve(s.p, s.ambient, 0, dt);
         EXPECT_TRUE(implicit.statistics().converged);
         EXPECT_GT(implicit.statistics().iterations, 5u);
         EXPECT_LE(implicit.statistics().residual, cg.tolerance);

@@ -194,7 +194,7 @@ namespace
         for (int k = 0; k < steps; ++k)
         {
             run.linearised = implicit.resistance().nContacts();
-            implicit.solve(p, forces.ambient(), dt);
+            implicit.solve(p, forces.ambient(), 0, dt);
             ImplicitEuler::move(p, box, dt);
             evaluate(dt);
         }
@@ -343,7 +343,7 @@ TEST(ImplicitContact, LinearisedSpringsAreTheKernelsForceChange)
         );
         ASSERT_EQ(k.kt, c.kt);
         ASSERT_EQ(k.kr, c.kr);
-        const LinearisedContact linear{0, 1, g.n, ai, aj, Vec3::Zero(), k};
+        const LinearisedContact linear{0, 1, g.n, ai, aj, Vec3::Zero(), g.r.y(), k};
         PairList noPairs;
         noPairs.offset.assign(3, 0);
         noPairs.transpose();
@@ -829,7 +829,7 @@ TEST(ImplicitContact, PairAcrossTheShearedBoundaryMovesAsUnwrapped)
     auto run = [&](const Vec3& xi, double t)
     {
         LeesEdwardsBox box(L, 1.0);
-        box.setTime(t);
+        box.setStrain(box.shearRate()*(t));
         Particles p;
         p.add(xi, 1.0, rho, 0);
         p.add(xi + Vec3(0.3, 2.0, 0.2), 1.1, rho, 1);
@@ -844,7 +844,7 @@ TEST(ImplicitContact, PairAcrossTheShearedBoundaryMovesAsUnwrapped)
         params.integrator = Integrator::overdamped;
         params.maxOverlap = 10;
         Simulation sim(p, box, flow, models, params);
-        sim.start(t);
+        sim.start(t, false, Simulation::Shear{t, 1.0});
         for (int k = 0; k < 5; ++k)
         {
             sim.step(2e-3);
@@ -969,7 +969,7 @@ TEST(ImplicitContact, RestartIsBitwise)
         b.particles(), b.box(), s.flow, s.models, s.params
     );
     c.pairs() = b.pairs();
-    c.start(b.time(), true);
+    c.start(b.time(), true, b.shear());
     c.advance(0.05);
 
     EXPECT_EQ(a.steps() - before, c.steps());
@@ -1026,7 +1026,7 @@ TEST(ImplicitContact, RestoreAfterAnUnconvergedSolve)
     params.solver.maxIterations = 1;
     Simulation sim(sheared.particles(), sheared.box(), s.flow, s.models, params);
     sim.pairs() = sheared.pairs();
-    sim.start(sheared.time(), true);
+    sim.start(sheared.time(), true, sheared.shear());
     Simulation::Checkpoint c;
     sim.checkpoint(c);
 
@@ -1054,7 +1054,7 @@ TEST(ImplicitContact, WarmStartCarriesTheLastRateOfChange)
     {
         Simulation sim(sheared.particles(), sheared.box(), s.flow, s.models, s.params);
         sim.pairs() = sheared.pairs();
-        sim.start(sheared.time(), true);
+        sim.start(sheared.time(), true, sheared.shear());
         const double dt = sim.deltaT();
         const std::uint64_t before = sim.implicit()->iterations();
         for (int k = 0; k < 40; ++k)
@@ -1109,7 +1109,7 @@ TEST(ImplicitContact, BitwiseAcrossThreadCounts)
         omp_set_num_threads(nt);
         Simulation sim(sheared.particles(), sheared.box(), s.flow, s.models, s.params);
         sim.pairs() = sheared.pairs();
-        sim.start(sheared.time(), true);
+        sim.start(sheared.time(), true, sheared.shear());
         sim.step(2e-3);
 
         // y = A x for a fixed x, after the last step's setStep()

@@ -14,8 +14,9 @@ using namespace suspension;
 TEST(LeesEdwardsBox, OffsetGrowsWithStrainModuloLx)
 {
     LeesEdwardsBox box(Vec3(10, 8, 6), 0.5);
-    box.setTime(3.0);
-    // delta = gammaDot Ly t = 0.5*8*3 = 12 -> 2 (mod 10)
+    box.setStrain(1.5);
+    // delta = gamma Ly = 1.5*8 = 12 -> 2 (mod 10); jump gammaDot Ly
+    // = 0.5*8
     EXPECT_NEAR(box.offset(), 2.0, 1e-12);
     EXPECT_NEAR(box.imageVelocity(), 4.0, 1e-15);
 }
@@ -24,7 +25,7 @@ TEST(LeesEdwardsBox, OffsetGrowsWithStrainModuloLx)
 TEST(LeesEdwardsBox, ParticleLeavingTopReentersShifted)
 {
     LeesEdwardsBox box(Vec3(10, 8, 6), 1.0);
-    box.setTime(0.3);                       // delta = 2.4
+    box.setStrain(0.3);                     // delta = 2.4
     Vec3 x(5.0, 8.25, 1.0);
     Vec3 u(8.3, 0.1, 0.0);
     const int crossings = box.wrap(x, u);
@@ -49,7 +50,7 @@ TEST(LeesEdwardsBox, ParticleLeavingTopReentersShifted)
 TEST(LeesEdwardsBox, MinimumImageAcrossShearedBoundary)
 {
     LeesEdwardsBox box(Vec3(10, 8, 6), 1.0);
-    box.setTime(0.3);                       // delta = 2.4
+    box.setStrain(0.3);                     // delta = 2.4
     // i near the top, j near the bottom: j's image above sits at
     // (x_j + delta, y_j + Ly)
     const Vec3 xi(5.0, 7.8, 3.0);
@@ -81,7 +82,7 @@ TEST(LeesEdwardsBox, PositionThatCannotBeWrappedIsLeftAsItIs)
     // an integer: the sanitized build runs this). Just inside the bound
     // the wrap still lands in the box with its crossings
     LeesEdwardsBox box(Vec3(10, 8, 6), 1.0);
-    box.setTime(0.3);
+    box.setStrain(0.3);
     const double NaN = std::numeric_limits<double>::quiet_NaN();
     const double inf = std::numeric_limits<double>::infinity();
     const double far = LeesEdwardsBox::maxWrapLengths;
@@ -115,10 +116,10 @@ TEST(LeesEdwardsBox, PositionThatCannotBeWrappedIsLeftAsItIs)
 TEST(LeesEdwardsBox, OffsetThatCannotBeWrappedThrows)
 {
     LeesEdwardsBox box(Vec3(10, 8, 6), 1.0);
-    EXPECT_THROW(box.setTime(std::numeric_limits<double>::quiet_NaN()), std::invalid_argument);
-    EXPECT_THROW(box.setTime(std::numeric_limits<double>::infinity()), std::invalid_argument);
+    EXPECT_THROW(box.setStrain(std::numeric_limits<double>::quiet_NaN()), std::invalid_argument);
+    EXPECT_THROW(box.setStrain(std::numeric_limits<double>::infinity()), std::invalid_argument);
     EXPECT_THROW(box.setOffset(1e300), std::invalid_argument);
-    EXPECT_NO_THROW(box.setTime(1e6));
+    EXPECT_NO_THROW(box.setStrain(1e6));
     EXPECT_GE(box.offset(), 0);
     EXPECT_LT(box.offset(), 10);
 }

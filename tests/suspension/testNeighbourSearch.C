@@ -254,7 +254,7 @@ TEST(CellList, StencilsAgreeAfterManyWraps)
             p.u[i] = Vec3(gammaDot*p.x[i].y() + jitter(gen), jitter(gen), jitter(gen));
             p.x[i] += dt*p.u[i];
         }
-        box.setTime(step*dt);
+        box.setStrain(box.shearRate()*(step*dt));
         for (std::size_t i = 0; i < p.size(); ++i)
         {
             crossings += std::abs(box.wrap(p.x[i], p.u[i]));
@@ -365,7 +365,7 @@ TEST(CellList, TooSmallBoxThrows)
     NeighbourSearch search({0.1, 0.2});
     EXPECT_THROW
     (
-        search.update(p, LeesEdwardsBox(Vec3(6, 10, 10), 1), list, 1.0),
+        search.update(p, LeesEdwardsBox(Vec3(6, 10, 10), 1), list),
         std::invalid_argument
     );
 }
@@ -386,8 +386,8 @@ TEST(NeighbourSearch, SkinListHoldsEveryPairInRange)
     std::mt19937 gen(6);
     const Vec3 L(12.5, 11.5, 10.5);
     const ShearFlow flow(1.0, 0.5, 1, L.y());       // wavy: |grad U| up to 1.27
-    const double G = flow.maxVelocityGradient();
-    LeesEdwardsBox box(L, flow.shearRate());
+    const double G = flow.maxVelocityGradient(1.0);
+    LeesEdwardsBox box(L, 1.0);
     std::uniform_real_distribution<double> u(0, 1);
     auto radius = [&](std::mt19937& g) { return u(g) < 0.5 ? 1.0 : 1.4; };
     Particles p = randomParticles(L, 250, radius, gen);
@@ -395,7 +395,7 @@ TEST(NeighbourSearch, SkinListHoldsEveryPairInRange)
     const double gap = 0.1;
     NeighbourSearch search({gap, 0.3});
     PairList list;
-    ASSERT_TRUE(search.update(p, box, list, G));
+    ASSERT_TRUE(search.update(p, box, list));
 
     // non-affine velocities by permanent id, redrawn every 10 steps, with a
     // drift in y that carries particles across the sheared boundary
@@ -417,18 +417,18 @@ TEST(NeighbourSearch, SkinListHoldsEveryPairInRange)
         }
         for (std::size_t i = 0; i < p.size(); ++i)
         {
-            p.u[i] = flow.sample(p.x[i]).U + v[p.id[i]];
+            p.u[i] = flow.sample(p.x[i], box.shearRate()).U + v[p.id[i]];
             p.x[i] += dt*p.u[i];
         }
-        box.setTime(step*dt);
+        box.setStrain(box.shearRate()*(step*dt));
         for (std::size_t i = 0; i < p.size(); ++i)
         {
             crossings += std::abs(box.wrap(p.x[i], p.u[i]));
-            Uinf[i] = flow.sample(p.x[i]).U;
+            Uinf[i] = flow.sample(p.x[i], box.shearRate()).U;
         }
-        search.accumulate(p, Uinf, dt);
+        search.accumulate(p, Uinf, dt, G);
 
-        if (!search.needsRebuild(G))
+        if (!search.needsRebuild())
         {
             // the old list still holds every pair in true range
             const PairSet listed = idPairs(p, list);
@@ -439,7 +439,7 @@ TEST(NeighbourSearch, SkinListHoldsEveryPairInRange)
             }
             ++checked;
         }
-        if (search.update(p, box, list, G))
+        if (search.update(p, box, list))
         {
             // a fresh list is exactly the pairs within range + skin
             EXPECT_EQ(idPairs(p, list), pairsBy(p, box, gap + 0.3, Stencil::bruteForce));
@@ -478,7 +478,7 @@ TEST(NeighbourSearch, CriterionCatchesWorstCaseApproach)
         box.wrap(p.x[1], p.u[1]);
         NeighbourSearch search({gap, skin});
         PairList list;
-        search.update(p, box, list, c.gammaDot);
+        search.update(p, box, list);
 
         const double dt = 1e-3;
         std::vector<Vec3> Uinf(2);
@@ -488,24 +488,24 @@ TEST(NeighbourSearch, CriterionCatchesWorstCaseApproach)
             for (std::size_t i = 0; i < 2; ++i)
             {
                 const Vec3 v = p.id[i] == 1 ? c.vA : Vec3(-c.vA);
-                p.u[i] = flow.sample(p.x[i]).U + v;
+                p.u[i] = flow.sample(p.x[i], box.shearRate()).U + v;
                 p.x[i] += dt*p.u[i];
             }
-            box.setTime(step*dt);
+            box.setStrain(box.shearRate()*(step*dt));
             for (std::size_t i = 0; i < 2; ++i)
             {
                 box.wrap(p.x[i], p.u[i]);
-                Uinf[i] = flow.sample(p.x[i]).U;
+                Uinf[i] = flow.sample(p.x[i], box.shearRate()).U;
             }
-            search.accumulate(p, Uinf, dt);
+            search.accumulate(p, Uinf, dt, c.gammaDot);
             Vec3 r = p.x[1] - p.x[0];
             box.minimumImage(r);
-            if (r.norm() < 2 + gap && !search.needsRebuild(c.gammaDot))
+            if (r.norm() < 2 + gap && !search.needsRebuild())
             {
                 EXPECT_GE(slotOf(p, list, 1, 2).first, 0) << "step " << step;
                 ++inRange;
             }
-            search.update(p, box, list, c.gammaDot);
+            search.update(p, box, list);
         }
         EXPECT_GT(inRange, 100);
     }
@@ -520,34 +520,38 @@ TEST(NeighbourSearch, RebuildCriterion)
     const LeesEdwardsBox box(Vec3(10, 10, 10), 1);
     NeighbourSearch search({0.1, 0.2});           // R = 2.3
     PairList list;
-    EXPECT_TRUE(search.needsRebuild(1.0));
-    EXPECT_TRUE(search.update(p, box, list, 1.0));
+    EXPECT_TRUE(search.needsRebuild());
+    EXPECT_TRUE(search.update(p, box, list));
     EXPECT_DOUBLE_EQ(search.range(), 2.3);
-    EXPECT_FALSE(search.update(p, box, list, 1.0));
+    EXPECT_FALSE(search.update(p, box, list));
 
-    // affine motion only: G R t = 0.2 at t = 0.2/2.3
+    // affine motion only: G R t = 0.2 at t = 0.2/2.3 for G = 1, reached
+    // in two steps of G = 2 and 0.5 (a rate that changes)
     const std::vector<Vec3> U = p.u;
-    search.accumulate(p, U, 0.99*0.2/2.3);
-    EXPECT_FALSE(search.update(p, box, list, 1.0));
-    search.accumulate(p, U, 0.02*0.2/2.3);
-    EXPECT_TRUE(search.update(p, box, list, 1.0));
+    search.accumulate(p, U, 0.99*0.1/2.3, 2.0);     // 0.198
+    EXPECT_FALSE(search.update(p, box, list));
+    search.accumulate(p, U, 0.01*0.2/2.3, 0.5);     // 0.199
+    EXPECT_FALSE(search.update(p, box, list));
+    search.accumulate(p, U, 0.02*0.2/2.3, 0.5);     // 0.201
+    EXPECT_TRUE(search.update(p, box, list));
     EXPECT_EQ(search.timeSinceBuild(), 0);
 
     // non-affine path: 2 l = 0.2 at l = 0.1, accumulated in two legs
     p.u[1] = Vec3(0, 0, 1);
-    search.accumulate(p, U, 0.06);
+    search.accumulate(p, U, 0.06, 0.0);
     EXPECT_DOUBLE_EQ(search.maxPath(), 0.06);
-    EXPECT_FALSE(search.update(p, box, list, 0.0));
+    EXPECT_FALSE(search.update(p, box, list));
     p.u[1] = Vec3(0, -1, 0);                        // turning back still counts
-    search.accumulate(p, U, 0.05);
-    EXPECT_TRUE(search.update(p, box, list, 0.0));
+    search.accumulate(p, U, 0.05, 0.0);
+    EXPECT_TRUE(search.update(p, box, list));
     EXPECT_EQ(search.statistics().builds, 3u);
 
     // a list of other particles is refused; a cleared one is rebuilt
     p.add(Vec3(8, 8, 8), 1.0, 1.0, 2);
-    EXPECT_THROW(search.update(p, box, list, 0.0), std::invalid_argument);
+    EXPECT_THROW(search.update(p, box, list), std::invalid_argument);
+    EXPECT_THROW(search.accumulate(p, p.u, 0.01, -1.0), std::invalid_argument);
     list = PairList();
-    EXPECT_TRUE(search.update(p, box, list, 0.0));
+    EXPECT_TRUE(search.update(p, box, list));
     EXPECT_EQ(list.nParticles(), 3u);
 }
 

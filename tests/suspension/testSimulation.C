@@ -139,10 +139,10 @@ namespace
         mutable std::atomic<std::size_t> samples{0};
         mutable std::vector<std::size_t> perCheck;
 
-        FlowSample sample(const Vec3& x) const override
+        FlowSample sample(const Vec3& x, double gammaDot) const override
         {
             ++samples;
-            return ShearFlow::sample(x);
+            return ShearFlow::sample(x, gammaDot);
         }
 
         void sampled(const Particles&) const override
@@ -197,7 +197,7 @@ TEST(Simulation, PairAcrossShearedBoundaryFeelsTheSameAsUnwrapped)
     auto pairForce = [&](const Vec3& xi, double t)
     {
         LeesEdwardsBox box(L, 1.0);
-        box.setTime(t);
+        box.setStrain(box.shearRate()*(t));
         Vec3 xj = xi + Vec3(0.3, 2.15, 0.2);
         Vec3 uj = Vec3(xj.y(), 0, 0) + Vec3(0.1, -0.2, 0.05);
         Particles p;
@@ -207,7 +207,7 @@ TEST(Simulation, PairAcrossShearedBoundaryFeelsTheSameAsUnwrapped)
         p.u[1] = uj;
         box.wrap(p.x[1], p.u[1]);
         Simulation sim(p, box, flow, models, simParams());
-        sim.start(t);
+        sim.start(t, false, Simulation::Shear{t, 1.0});
         const Particles& q = sim.particles();
         const std::size_t i = q.id[0] == 0 ? 0 : 1;
         return std::make_pair(q.F[i], q.T[i]);
@@ -397,14 +397,20 @@ namespace
 
         void setAmplitude(double A) { flow_ = ShearFlow(gammaDot_, A, 1, Ly_); }
 
-        FlowSample sample(const Vec3& x) const override
+        FlowSample sample(const Vec3& x, double gammaDot) const override
         {
-            return flow_.sample(x);
+            return flow_.sample(x, gammaDot);
         }
-        double shearRate() const override { return gammaDot_; }
-        double maxVelocityGradient() const override
+        double shearRate(double t) const override { return flow_.shearRate(t); }
+        double meanShearRate(double t0, double t1) const override
         {
-            return flow_.maxVelocityGradient();
+            return flow_.meanShearRate(t0, t1);
+        }
+        double maxShearRate() const override { return flow_.maxShearRate(); }
+        bool shearRateChanges() const override { return false; }
+        double maxPeriodicGradient() const override
+        {
+            return flow_.maxPeriodicGradient();
         }
     };
 }

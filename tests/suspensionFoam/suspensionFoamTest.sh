@@ -133,6 +133,18 @@ newCase()
     mesh "$1"
 }
 
+# The number of columns of a '# Time ...' header of a function object's
+# .dat file, and the column (from 1, as awk's $k) of the name $2 in it
+columns()
+{
+    grep -m1 "^# Time" "$1" | awk '{ print NF - 1 }'
+}
+column()
+{
+    grep -m1 "^# Time" "$1" \
+        | awk -v name="$2" '{ for (k = 2; k <= NF; ++k) if ($k == name) print k - 1 }'
+}
+
 # Number of entries of an ascii IOField: the line before the first '(',
 # or N of a uniform list N{value}
 entries()
@@ -365,17 +377,22 @@ run)
     dat="$work/c/postProcessing/rheology/0/rheology.dat"
     [ -f "$dat" ] || fail "no rheology.dat"
     grep -q "^# Time" "$dat" || fail "rheology.dat: no column header"
-    for column in strain etaR N1 N2 Pi etaN etaR_stokes etaR_lubrication \
-        etaR_contact etaR_repulsion etaR_attraction nContacts maxOverlap \
-        steps deltaT uFluct2 pairSlots
+    for column in strain shearRate sigma etaR N1 N2 Pi etaN etaR_stokes \
+        etaR_lubrication etaR_contact etaR_repulsion etaR_attraction \
+        nContacts maxOverlap steps deltaT uFluct2 pairSlots
     do
         grep "^# Time" "$dat" | grep -qw "$column" \
             || fail "rheology.dat: no column $column"
     done
     rows=$(grep -vc "^#" "$dat")
     [ "$rows" -eq 4 ] || fail "rheology.dat: $rows rows, expected 4"
-    awk '!/^#/ && (NF != 18 || $17 < 0 || $18 < 1) { exit 1 }' "$dat" \
-        || fail "rheology.dat: rows without 18 columns"
+    # every row has the header's columns; the rate is the constant 1, the
+    # stress is etaR at that rate, the list has slots
+    awk -v n="$(columns "$dat")" -v r="$(column "$dat" shearRate)" \
+        -v s="$(column "$dat" sigma)" -v e="$(column "$dat" etaR)" \
+        -v u="$(column "$dat" uFluct2)" -v p="$(column "$dat" pairSlots)" \
+        '!/^#/ && (NF != n || $r != 1 || $s != $e || $u < 0 || $p < 1) { exit 1 }' \
+        "$dat" || fail "rheology.dat: rows not of the header's columns and values"
 
     for t in 0 0.002 0.004; do
         cloud="$work/c/$t/lagrangian/suspension"
@@ -427,9 +444,10 @@ implicitRun)
             || fail "$integrator: rheology.dat: no CG columns"
         rows=$(grep -vc "^#" "$dat")
         [ "$rows" -eq 4 ] || fail "$integrator: $rows rows, expected 4"
-        awk '!/^#/ && (NF != 20 || $19 < 1 || $19 > 1000 || $20 > 1e-6) \
-            { exit 1 }' "$dat" \
-            || fail "$integrator: rows without converged CG statistics"
+        awk -v n="$(columns "$dat")" -v i="$(column "$dat" cgIterations)" \
+            -v r="$(column "$dat" cgResidual)" \
+            '!/^#/ && (NF != n || $i < 1 || $i > 1000 || $r > 1e-6) { exit 1 }' \
+            "$dat" || fail "$integrator: rows without converged CG statistics"
     done
     ;;
 
@@ -918,9 +936,14 @@ badDeltaT)
     ;;
 
 badShearRate)
+    # The rate is a scalar Function1 of time: a vector, or a type that is
+    # not one, is an error naming the entry
     newCase c
-    setEntry c $properties ambientFlow/shearRate 2
-    expectInputError c suspensionProperties "shear rate"
+    setEntry c $properties ambientFlow/shearRate "(1 0 0)"
+    expectInputError c suspensionProperties "shearRate"
+    newCase d
+    setEntry d $properties ambientFlow/shearRate "sinus"
+    expectInputError d suspensionProperties "Unknown Function1 type sinus for shearRate"
     ;;
 
 badAmbientFlowEntry)
@@ -1138,8 +1161,11 @@ overlappingStart|jammedStart)
     ;;
 
 referenceOutput)
-    # reference/ holds what the solver of commit 7834609 (the cloud wrote
-    # its own output) wrote for tiny/ with makeSuspension, on one thread:
+    # reference/ holds what the solver wrote for tiny/ with makeSuspension,
+    # on one thread (remade when rheology.dat took the columns shearRate
+    # and sigma; every other number as the solver of commit 7834609, where
+    # the cloud wrote its own output, had it but for round-off in one
+    # entry of 0.004/particleStress):
     # the function objects must write the same numbers in the same files.
     # A change of the engine's numbers on purpose remakes them: these steps
     # on a copy of tiny/ (OMP_NUM_THREADS=1), then copy the 14 files
@@ -1250,14 +1276,14 @@ functionObjectEntries)
     [ "$(grep "^# Time" "$dat" | grep -o "etaR_" | wc -l)" -eq 2 ] \
         || fail "rheology.dat: other contributions"
     [ "$(rows "$dat" | wc -l)" -eq 2 ] || fail "rheology.dat: not 2 rows"
-    awk '!/^#/ && NF != 15 { exit 1 }' "$dat" \
-        || fail "rheology.dat: rows without 15 columns"
+    awk '!/^#/ && NF != 17 { exit 1 }' "$dat" \
+        || fail "rheology.dat: rows without 17 columns"
     # The numbers of the full rows (reference/) of the steps written, in
     # the columns chosen: Time..etaN, etaR_contact, etaR_stokes, the rest
     diff <(rows "$dat" | awk '{ $1 = $1; print }') \
          <(rows "$(dirname "$0")/reference/postProcessing/rheology/0/rheology.dat" \
-            | awk 'NR % 2 == 0 { print $1, $2, $3, $4, $5, $6, $7, $10, $8,
-                   $13, $14, $15, $16, $17, $18 }') >&2 \
+            | awk 'NR % 2 == 0 { print $1, $2, $3, $4, $5, $6, $7, $8, $9,
+                   $12, $10, $15, $16, $17, $18, $19, $20 }') >&2 \
         || fail "rheology.dat: not the numbers of the reference rows"
     [ ! -e "$work/c/postProcessing/profiles/0" ] \
         || fail "profiles written at the start (writeAtStart false)"

@@ -22,14 +22,16 @@ const Foam::wordList Foam::ambientFlow::fieldNames
 namespace
 {
 
-//- One quantity of the flow (picked from the sample by get) at the points;
-//  a FatalError names the first point where the flow is not known
+//- One quantity of the flow (picked from the sample by get) at the points,
+//  at the rate now or of the periodic part only; a FatalError names the
+//  first point where the flow is not known
 template<class Type, class Get>
 Foam::tmp<Foam::Field<Type>> evaluate
 (
     const Foam::ambientFlow& flow,
     const Foam::pointField& points,
-    const Get& get
+    const Get& get,
+    const bool periodic = false
 )
 {
     using namespace Foam;
@@ -39,7 +41,10 @@ Foam::tmp<Foam::Field<Type>> evaluate
     ambientFlowSample values;
     forAll(points, i)
     {
-        if (!flow.sample(points[i], values))
+        const bool known = periodic
+          ? flow.samplePeriodic(points[i], values)
+          : flow.sample(points[i], values);
+        if (!known)
         {
             flow.notKnownAt
             (
@@ -100,13 +105,32 @@ void writeCellAndFaceField
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::ambientFlow::ambientFlow(const vector& box)
+Foam::ambientFlow::ambientFlow(const dictionary& dict, const vector& box)
 :
-    box_(box)
+    box_(box),
+    programme_(dict, "shearRate"),
+    gammaDot_(programme_.value(0))
 {}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::ambientFlow::sample
+(
+    const point& p,
+    const scalar gammaDot,
+    ambientFlowSample& values
+) const
+{
+    if (!samplePeriodic(p, values))
+    {
+        return false;
+    }
+    values.U.x() += gammaDot*p.y();
+    values.gradU.yx() += gammaDot;
+    return true;
+}
+
 
 Foam::ambientFlowSample Foam::ambientFlow::sample(const point& p) const
 {
@@ -169,6 +193,18 @@ Foam::tmp<Foam::vectorField> Foam::ambientFlow::U
     return evaluate<vector>
     (
         *this, points, [](const ambientFlowSample& s) { return s.U; }
+    );
+}
+
+
+Foam::tmp<Foam::vectorField> Foam::ambientFlow::periodicU
+(
+    const pointField& points
+) const
+{
+    return evaluate<vector>
+    (
+        *this, points, [](const ambientFlowSample& s) { return s.U; }, true
     );
 }
 

@@ -3,9 +3,15 @@
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::ambientFlowAdapter::ambientFlowAdapter(const ambientFlow& flow)
+Foam::ambientFlowAdapter::ambientFlowAdapter
+(
+    const ambientFlow& flow,
+    const scalar tStart,
+    const scalar tEnd
+)
 :
     flow_(flow),
+    maxShearRate_(flow.programme().max(tStart, Foam::max(tStart, tEnd))),
     notKnown_(false)
 {}
 
@@ -14,11 +20,12 @@ Foam::ambientFlowAdapter::ambientFlowAdapter(const ambientFlow& flow)
 
 suspension::FlowSample Foam::ambientFlowAdapter::sample
 (
-    const suspension::Vec3& x
+    const suspension::Vec3& x,
+    const double gammaDot
 ) const
 {
     ambientFlowSample values;
-    if (!flow_.sample(toFoam(x), values))
+    if (!flow_.sample(toFoam(x), gammaDot, values))
     {
         // Threads may not stop the run: sampled() does, after the loop
         notKnown_.store(true, std::memory_order_relaxed);
@@ -28,15 +35,37 @@ suspension::FlowSample Foam::ambientFlowAdapter::sample
 }
 
 
-double Foam::ambientFlowAdapter::shearRate() const
+double Foam::ambientFlowAdapter::shearRate(const double t) const
 {
-    return flow_.shearRate();
+    return flow_.programme().value(t);
 }
 
 
-double Foam::ambientFlowAdapter::maxVelocityGradient() const
+double Foam::ambientFlowAdapter::meanShearRate
+(
+    const double t0,
+    const double t1
+) const
 {
-    return flow_.maxVelocityGradient();
+    return flow_.programme().mean(t0, t1);
+}
+
+
+double Foam::ambientFlowAdapter::maxShearRate() const
+{
+    return maxShearRate_;
+}
+
+
+bool Foam::ambientFlowAdapter::shearRateChanges() const
+{
+    return !flow_.programme().constant();
+}
+
+
+double Foam::ambientFlowAdapter::maxPeriodicGradient() const
+{
+    return flow_.maxPeriodicGradient();
 }
 
 
@@ -55,7 +84,7 @@ void Foam::ambientFlowAdapter::sampled
     for (std::size_t i = 0; i < particles.size(); ++i)
     {
         const point x = toFoam(particles.x[i]);
-        if (!flow_.sample(x, values))
+        if (!flow_.samplePeriodic(x, values))
         {
             flow_.notKnownAt
             (

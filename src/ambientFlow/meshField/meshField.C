@@ -46,11 +46,10 @@ Foam::meshField::meshField
     const fvMesh* mesh
 )
 :
-    ambientFlow(box),
-    gammaDot_(getScalarIn(dict, "shearRate", interval::open(-GREAT, GREAT))),
+    ambientFlow(dict, box),
     field_(lookupField(dict, mesh)),
     interpolation_(field_),
-    maxGradU_(mag(gammaDot_) + interpolation_.maxGradient())
+    maxGradU_(interpolation_.maxGradient())
 {}
 
 
@@ -62,19 +61,13 @@ Foam::word Foam::meshField::fieldName(const dictionary& dict)
 }
 
 
-bool Foam::meshField::sample
+bool Foam::meshField::samplePeriodic
 (
     const point& p,
     ambientFlowSample& values
 ) const
 {
-    if (!interpolation_.sample(p, values))
-    {
-        return false;
-    }
-    values.U.x() += gammaDot_*p.y();
-    values.gradU.yx() += gammaDot_;
-    return true;
+    return interpolation_.sample(p, values);
 }
 
 
@@ -98,18 +91,12 @@ bool Foam::meshField::correct()
         return false;
     }
     interpolation_.update(field_);
-    maxGradU_ = mag(gammaDot_) + interpolation_.maxGradient();
+    maxGradU_ = interpolation_.maxGradient();
     return true;
 }
 
 
-Foam::scalar Foam::meshField::shearRate() const
-{
-    return gammaDot_;
-}
-
-
-Foam::scalar Foam::meshField::maxVelocityGradient() const
+Foam::scalar Foam::meshField::maxPeriodicGradient() const
 {
     return maxGradU_;
 }

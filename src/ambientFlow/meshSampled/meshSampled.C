@@ -67,10 +67,10 @@ Foam::tmp<Foam::volVectorField> Foam::meshSampled::sampled
     );
     volVectorField& U = tU.ref();
     const volVectorField& C = mesh.C();
-    U.primitiveFieldRef() = flow.U(C.primitiveField());
+    U.primitiveFieldRef() = flow.periodicU(C.primitiveField());
     forAll(U.boundaryField(), patchi)
     {
-        U.boundaryFieldRef()[patchi] == flow.U(C.boundaryField()[patchi]);
+        U.boundaryFieldRef()[patchi] == flow.periodicU(C.boundaryField()[patchi]);
     }
     return tU;
 }
@@ -85,7 +85,7 @@ Foam::meshSampled::meshSampled
     const fvMesh* mesh
 )
 :
-    ambientFlow(box),
+    ambientFlow(dict.subDict("flow"), box),
     flow_(readFlow(dict, box, mesh)),
     mesh_(requireMesh(dict, mesh)),
     interpolation_(sampled(mesh_, flow_())())
@@ -96,7 +96,7 @@ Foam::meshSampled::meshSampled
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-bool Foam::meshSampled::sample
+bool Foam::meshSampled::samplePeriodic
 (
     const point& p,
     ambientFlowSample& values
@@ -106,15 +106,9 @@ bool Foam::meshSampled::sample
 }
 
 
-Foam::scalar Foam::meshSampled::shearRate() const
+Foam::scalar Foam::meshSampled::maxPeriodicGradient() const
 {
-    return flow_->shearRate();
-}
-
-
-Foam::scalar Foam::meshSampled::maxVelocityGradient() const
-{
-    return flow_->maxVelocityGradient();
+    return flow_->maxPeriodicGradient();
 }
 
 

@@ -18,20 +18,15 @@ namespace Foam
 namespace
 {
 
-//- Read and check the entries of simple shear
+//- Check the entries of simple shear (the base reads shearRate): the
+//  engine's flow without a wave
 std::unique_ptr<const suspension::ShearFlow> readUniformShear
 (
     const Foam::dictionary& dict
 )
 {
-    using namespace Foam;
-
-    checkEntries(dict, {"type", "shearRate"});
-
-    return std::make_unique<const suspension::ShearFlow>
-    (
-        getScalarIn(dict, "shearRate", interval::open(-GREAT, GREAT))
-    );
+    Foam::checkEntries(dict, {"type", "shearRate"});
+    return std::make_unique<const suspension::ShearFlow>(0.0);
 }
 
 } // End anonymous namespace
@@ -41,11 +36,12 @@ std::unique_ptr<const suspension::ShearFlow> readUniformShear
 
 Foam::uniformShear::uniformShear
 (
+    const dictionary& dict,
     const vector& box,
     std::unique_ptr<const suspension::ShearFlow> flow
 )
 :
-    ambientFlow(box),
+    ambientFlow(dict, box),
     flow_(std::move(flow))
 {}
 
@@ -57,7 +53,7 @@ Foam::uniformShear::uniformShear
     const fvMesh*
 )
 :
-    uniformShear(box, readUniformShear(dict))
+    uniformShear(dict, box, readUniformShear(dict))
 {}
 
 
@@ -68,26 +64,20 @@ Foam::uniformShear::~uniformShear() = default;
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-bool Foam::uniformShear::sample
+bool Foam::uniformShear::samplePeriodic
 (
     const point& p,
     ambientFlowSample& values
 ) const
 {
-    values = toFoam(flow_->sample(toEigen(p)));
+    values = toFoam(flow_->sample(toEigen(p), 0));
     return true;
 }
 
 
-Foam::scalar Foam::uniformShear::shearRate() const
+Foam::scalar Foam::uniformShear::maxPeriodicGradient() const
 {
-    return flow_->shearRate();
-}
-
-
-Foam::scalar Foam::uniformShear::maxVelocityGradient() const
-{
-    return flow_->maxVelocityGradient();
+    return flow_->maxPeriodicGradient();
 }
 
 

@@ -31,7 +31,6 @@ std::unique_ptr<const suspension::ShearFlow> readWavyShear
     checkEntries(dict, {"type", "shearRate", "amplitude", "periods"});
 
     const interval finite = interval::open(-GREAT, GREAT);
-    const scalar gammaDot = getScalarIn(dict, "shearRate", finite);
     const scalar amplitude = getScalarIn(dict, "amplitude", finite);
     const scalar n = dict.get<scalar>("periods");
 
@@ -56,7 +55,7 @@ std::unique_ptr<const suspension::ShearFlow> readWavyShear
 
     return std::make_unique<const suspension::ShearFlow>
     (
-        gammaDot, amplitude, n, Ly
+        0.0, amplitude, n, Ly
     );
 }
 
@@ -72,7 +71,7 @@ Foam::wavyShear::wavyShear
     const fvMesh*
 )
 :
-    uniformShear(box, readWavyShear(dict, box))
+    uniformShear(dict, box, readWavyShear(dict, box))
 {}
 
 

@@ -46,9 +46,9 @@ LeesEdwardsBox::LeesEdwardsBox(const Vec3& L, double gammaDot)
 }
 
 
-void LeesEdwardsBox::setTime(double t)
+void LeesEdwardsBox::setStrain(double gamma)
 {
-    setOffset(gammaDot_*L_.y()*t);
+    setOffset(gamma*L_.y());
 }
 
 
@@ -61,7 +61,7 @@ void LeesEdwardsBox::setOffset(double delta)
             "LeesEdwardsBox: the offset " + std::to_string(delta)
           + " of the image above cannot be wrapped (not finite, or 2^"
           + std::to_string(std::ilogb(maxWrapLengths)) + " box lengths or"
-            " more): a non-finite or too large time"
+            " more): a non-finite or too large strain"
         );
     }
     offset_ = periodic(delta, L_.x());

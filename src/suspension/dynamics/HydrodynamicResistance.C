@@ -194,12 +194,14 @@ HydrodynamicResistance::HydrodynamicResistance
 (
     const StokesDrag& drag,
     const Lubrication* lubrication,
-    bool implicitNormalContact
+    bool implicitNormalContact,
+    bool shearForces
 )
 :
     drag_(drag),
     lubrication_(),
-    implicitNormalContact_(implicitNormalContact)
+    implicitNormalContact_(implicitNormalContact),
+    rateChanges_(shearForces)
 {
     if (lubrication)
     {
@@ -256,6 +258,12 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
     pairs_.resize(nPairs);
     pairRows_.resize(nPairs);
     ambientForces_.resize(6*N);
+    shearRows_.resize(rateChanges_ ? nPairs : 0);
+    shearForces_.setZero(rateChanges_ ? 6*N : 0);
+
+    // The rate of strain of a unit shear rate, for F_s
+    Mat3 unitShear = Mat3::Zero();
+    unitShear(0, 1) = unitShear(1, 0) = 0.5;
 
     // Pass 1: Stokes drag, pair coefficients and the rows of i of each
     // pair; the rows of j wait in pairRows_. Stresslets per block.
@@ -300,6 +308,16 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
                 b.head<3>() += fE.segment<3>(0);
                 b.tail<3>() += fE.segment<3>(6);
                 pairRows_[s] << fE.segment<3>(3), fE.segment<3>(9);
+                if (rateChanges_)
+                {
+                    const Lubrication::PairVector fS = Lubrication::strainForces
+                    (
+                        c, g.n, unitShear, unitShear
+                    );
+                    shearForces_.segment<3>(6*i) += fS.segment<3>(0);
+                    shearForces_.segment<3>(6*i + 3) += fS.segment<3>(6);
+                    shearRows_[s] << fS.segment<3>(3), fS.segment<3>(9);
+                }
 
                 // Stresslet (9b) of the force on i at the current velocities
                 Vec6 yi, yj;
@@ -319,6 +337,13 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
         for (std::uint32_t k = index_.offsetT[j]; k < index_.offsetT[j + 1]; ++k)
         {
             ambientForces_.segment<6>(6*j) += pairRows_[index_.slotT[k]];
+        }
+        if (rateChanges_)
+        {
+            for (std::uint32_t k = index_.offsetT[j]; k < index_.offsetT[j + 1]; ++k)
+            {
+                shearForces_.segment<6>(6*j) += shearRows_[index_.slotT[k]];
+            }
         }
     }
 
@@ -342,7 +367,7 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
         }
         contacts_.push_back
         ({
-            c.n, c.ai, c.aj, 2*c.ai*c.aj/(c.ai + c.aj), c.dUinf, k, 0, 0, 0
+            c.n, c.ai, c.aj, 2*c.ai*c.aj/(c.ai + c.aj), c.dUinf, c.dy, k, 0, 0, 0
         });
         contactIndex_.j.push_back(c.j);
         ++contactIndex_.offset[c.i + 1];
@@ -505,6 +530,7 @@ void HydrodynamicResistance::contactRightHandSide
 (
     const Vector& v,
     const std::vector<FlowSample>& ambient,
+    double shift,
     double dt,
     Vector& b
 ) const
@@ -526,7 +552,7 @@ void HydrodynamicResistance::contactRightHandSide
                 const Contact& c = contacts_[s];
                 const std::uint32_t j = contactIndex_.j[s];
                 Vec6 Vj;
-                Vj << c.dUinf, ambient[j].Omega();
+                Vj << c.dUinf + shift*c.dy*Vec3::UnitX(), ambient[j].Omega();
                 const Modes ambientModes = contactModes(c, Vi, Vj);
                 const Modes start = contactModes(c, vi, v.segment<6>(6*j));
                 const Modes m

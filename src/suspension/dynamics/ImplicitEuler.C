@@ -1,6 +1,8 @@
 #include "dynamics/ImplicitEuler.H"
 #include "dynamics/MoveAndWrap.H"
 
+#include <stdexcept>
+
 namespace suspension
 {
 
@@ -9,11 +11,16 @@ ImplicitEuler::ImplicitEuler
     const ForceModels& models,
     bool inertia,
     const ConjugateGradient::Params& solver,
-    bool implicitNormalContact
+    bool implicitNormalContact,
+    bool rateChanges
 )
 :
     inertia_(inertia),
-    resistance_(models.drag(), models.get<Lubrication>(), implicitNormalContact),
+    resistance_
+    (
+        models.drag(), models.get<Lubrication>(), implicitNormalContact,
+        rateChanges
+    ),
     solver_(solver),
     iterations_(0)
 {}
@@ -39,7 +46,8 @@ void ImplicitEuler::evaluate
 bool ImplicitEuler::solve
 (
     Particles& p,
-    const std::vector<FlowSample>& ambient,
+    const std::vector<FlowSample>& sampled,
+    double shift,
     double dt
 )
 {
@@ -48,10 +56,33 @@ bool ImplicitEuler::solve
     const double invDt = inertia_ ? 1/dt : 0;
     resistance_.setStep(p, dt, inertia_);
 
+    // The flow at the step's rate: the samples shifted by a simple shear
+    // (U_inf is affine in the rate)
+    if (shift != 0 && !resistance_.rateChanges())
+    {
+        throw std::logic_error
+        (
+            "ImplicitEuler: a step at another shear rate than the samples'"
+            " needs an integrator constructed with rateChanges"
+        );
+    }
+    if (shift != 0)
+    {
+        shifted_ = sampled;
+        #pragma omp parallel for schedule(static) if(parallel)
+        for (std::size_t i = 0; i < N; ++i)
+        {
+            shifted_[i].U.x() += shift*p.x[i].y();
+            shifted_[i].gradU(1, 0) += shift;
+        }
+    }
+    const std::vector<FlowSample>& ambient = shift != 0 ? shifted_ : sampled;
+
     // V'^n and the right-hand side, relative to the flow at x^n, and the
     // predictor of the warm start, d = dt (du/dt, domega/dt): the last
     // step's rate of change carried over this step
     const Eigen::VectorXd& Famb = resistance_.ambientForces();
+    const Eigen::VectorXd& Fs = resistance_.shearForces();
     v_.resize(6*N);
     b_.resize(6*N);
     d_.resize(6*N);
@@ -64,12 +95,16 @@ bool ImplicitEuler::solve
         v_.segment<3>(6*i + 3) = w;
         b_.segment<3>(6*i) = Famb.segment<3>(6*i) + p.F[i] + invDt*p.m[i]*u;
         b_.segment<3>(6*i + 3) = Famb.segment<3>(6*i + 3) + p.T[i] + invDt*p.I[i]*w;
+        if (shift != 0)
+        {
+            b_.segment<6>(6*i) += shift*Fs.segment<6>(6*i);
+        }
         d_.segment<3>(6*i) = dt*p.dudt[i];
         d_.segment<3>(6*i + 3) = dt*p.domegadt[i];
     }
 
     // The springs' load by the ambient motion and the dashpot's of V'^n
-    resistance_.contactRightHandSide(v_, ambient, dt, b_);
+    resistance_.contactRightHandSide(v_, ambient, shift, dt, b_);
 
     // Warm start: V'^n moved along d as far as it lowers the error
     // (ConjugateGradient.H)

@@ -33,7 +33,7 @@ namespace
         return TimeStepLimits
         (
             models, *aMin, *aMax, params.rho, params.safety, params.integrator,
-            flow.maxVelocityGradient(), implicitNormalContact
+            flow.maxVelocityGradient(flow.maxShearRate()), implicitNormalContact
         );
     }
 
@@ -107,6 +107,7 @@ Simulation::Simulation
         {"maxDisplacement", 0}
     },
     time_(0),
+    strain_(0),
     steps_(0)
 {
     if
@@ -142,7 +143,8 @@ Simulation::Simulation
             forces_.models(),
             params.integrator == Integrator::implicitEuler,
             params.solver,
-            implicitNormalContact_
+            implicitNormalContact_,
+            flow.shearRateChanges()
         );
     }
 }
@@ -170,10 +172,20 @@ void Simulation::evaluateForces(double dt)
 }
 
 
-void Simulation::start(double t, bool forcesGiven)
+void Simulation::start
+(
+    double t,
+    bool forcesGiven,
+    const std::optional<Shear>& shear
+)
 {
     time_ = t;
-    box_.setTime(t);
+    if (shear)
+    {
+        strain_ = shear->strain;
+    }
+    box_.setShearRate(shear ? shear->rate : flow_.shearRate(t));
+    box_.setStrain(strain_);
     for (std::size_t i = 0; i < particles_.size(); ++i)
     {
         if (!box_.contains(particles_.x[i]))
@@ -231,7 +243,8 @@ void Simulation::flowChanged()
             forces_.models(),
             params_.integrator == Integrator::implicitEuler,
             params_.solver,
-            normal
+            normal,
+            flow_.shearRateChanges()
         );
     }
     implicitNormalContact_ = normal;
@@ -241,7 +254,7 @@ void Simulation::flowChanged()
     {
         stepLimitCounts_[0].name = limits_.binding().name;
     }
-    start(time_, true);
+    start(time_, true, shear());
 }
 
 
@@ -264,6 +277,7 @@ void Simulation::checkpoint(Checkpoint& c) const
     c.particles = particles_;
     copySlots(pairs_, c.pairs);
     c.time = time_;
+    c.shear = shear();
     c.steps = steps_;
 }
 
@@ -273,7 +287,7 @@ void Simulation::restore(const Checkpoint& c)
     particles_ = c.particles;
     copySlots(c.pairs, pairs_);
     steps_ = c.steps;
-    start(c.time, true);
+    start(c.time, true, c.shear);
 }
 
 
@@ -300,27 +314,45 @@ void Simulation::step(double dt)
 
 std::string Simulation::takeStep(double dt)
 {
-    // Path of each particle relative to the flow, for the list's skin
+    // The step's mean rate; the ambient samples are those of the last
+    // evaluation, at the rate of the last step
+    const double rate = flow_.meanShearRate(time_, time_ + dt);
+    const double shift = rate - box_.shearRate();
+    const double maxRate = std::max
+    ({
+        std::abs(rate), std::abs(flow_.shearRate(time_)),
+        std::abs(flow_.shearRate(time_ + dt))
+    });
+    box_.setShearRate(rate);
+
+    // Path of each particle relative to the flow, for the list's skin: the
+    // implicit velocities are those of the flow at the step's rate
     const std::vector<FlowSample>& ambient = forces_.ambient();
+    const double uShift = implicit_ ? shift : 0;
     Uinf_.resize(particles_.size());
     for (std::size_t i = 0; i < Uinf_.size(); ++i)
     {
         Uinf_[i] = ambient[i].U;
+        Uinf_[i].x() += uShift*particles_.x[i].y();
     }
     if (implicit_)
     {
         ScopedTime timer(times_.hydrodynamics);
-        if (!implicit_->solve(particles_, ambient, dt))     // u^(n+1) at x^n
+        if (!implicit_->solve(particles_, ambient, shift, dt))   // u^(n+1) at x^n
         {
             return solveFailure(dt);
         }
     }
     {
         ScopedTime timer(times_.search);
-        search_.accumulate(particles_, Uinf_, dt);
+        search_.accumulate
+        (
+            particles_, Uinf_, dt, flow_.maxVelocityGradient(maxRate)
+        );
     }
 
-    box_.setTime(time_ + dt);
+    strain_ += rate*dt;
+    box_.setStrain(strain_);
     std::size_t unwrapped;
     {
         ScopedTime timer(times_.integration);
@@ -334,7 +366,7 @@ std::string Simulation::takeStep(double dt)
     }
     {
         ScopedTime timer(times_.search);
-        search_.update(particles_, box_, pairs_, flow_.maxVelocityGradient());
+        search_.update(particles_, box_, pairs_);
     }
     evaluateForces(dt);
     if (!implicit_)
@@ -558,7 +590,7 @@ Rheology Simulation::rheology() const
     return Rheology
     (
         summary_, box_.volume(), forces_.models().drag().params().eta,
-        flow_.shearRate()
+        box_.shearRate()
     );
 }
 
@@ -587,7 +619,7 @@ double Simulation::velocityFluctuation() const
     double sum = 0;
     for (std::size_t i = 0; i < p.size(); ++i)
     {
-        sum += (p.u[i] - flow_.sample(p.x[i]).U).squaredNorm();
+        sum += (p.u[i] - flow_.sample(p.x[i], box_.shearRate()).U).squaredNorm();
     }
     flow_.sampled(p);
     return p.size() ? sum/p.size() : 0;

@@ -7,17 +7,17 @@
 namespace suspension
 {
 
-ShearFlow::ShearFlow(double gammaDot)
+ShearFlow::ShearFlow(double gammaDot0)
 :
-    gammaDot_(gammaDot),
+    gammaDot0_(gammaDot0),
     amplitude_(0),
     k_(0)
 {}
 
 
-ShearFlow::ShearFlow(double gammaDot, double amplitude, double periods, double Ly)
+ShearFlow::ShearFlow(double gammaDot0, double amplitude, double periods, double Ly)
 :
-    gammaDot_(gammaDot),
+    gammaDot0_(gammaDot0),
     amplitude_(amplitude),
     k_(0)
 {
@@ -32,23 +32,29 @@ ShearFlow::ShearFlow(double gammaDot, double amplitude, double periods, double L
 }
 
 
-FlowSample ShearFlow::sample(const Vec3& x) const
+FlowSample ShearFlow::sample(const Vec3& x, double gammaDot) const
 {
     const double s = std::sin(k_*x.y());
     const double c = std::cos(k_*x.y());
 
     FlowSample f;
-    f.U.x() = gammaDot_*x.y() + amplitude_*s;              // eq. (17)
-    f.gradU(1, 0) = gammaDot_ + amplitude_*k_*c;            // d_y U_x
+    f.U.x() = gammaDot*x.y() + amplitude_*s;                // eq. (17)
+    f.gradU(1, 0) = gammaDot + amplitude_*k_*c;              // d_y U_x
     f.laplacianU.x() = -amplitude_*k_*k_*s;                 // d_yy U_x
     f.gradLaplacianU(1, 0) = -amplitude_*k_*k_*k_*c;        // d_yyy U_x
     return f;
 }
 
 
-double ShearFlow::maxVelocityGradient() const
+double ShearFlow::maxShearRate() const
 {
-    return std::abs(gammaDot_) + std::abs(amplitude_*k_);
+    return std::abs(gammaDot0_);
+}
+
+
+double ShearFlow::maxPeriodicGradient() const
+{
+    return std::abs(amplitude_*k_);
 }
 
 } // namespace suspension

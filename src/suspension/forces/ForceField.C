@@ -417,7 +417,7 @@ void ForceField::nearPass
                         blockLinearised_[b].push_back
                         ({
                             static_cast<std::uint32_t>(i), j, g.n, g.ai, g.aj,
-                            ambient_[j].U + jump - ambient_[i].U, stiffness
+                            ambient_[j].U + jump - ambient_[i].U, r.y(), stiffness
                         });
                     }
                     if (advanceHistory)
@@ -692,7 +692,7 @@ ForceSummary ForceField::run
             const BlockRange rows(b, N);
             for (std::size_t i = rows.begin; i < rows.end; ++i)
             {
-                const FlowSample& f = ambient_[i] = flow.sample(p.x[i]);
+                const FlowSample& f = ambient_[i] = flow.sample(p.x[i], box.shearRate());
                 uRel_[i] = p.u[i] - f.U;
                 wRel_[i] = p.omega[i] - f.Omega();
                 E_[i] = f.E();

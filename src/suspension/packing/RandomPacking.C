@@ -195,7 +195,7 @@ namespace
                 p.x[i] += dt*p.u[i];
                 box.wrap(p.x[i], p.u[i]);
             }
-            search.accumulate(p, Uinf, dt);
+            search.accumulate(p, Uinf, dt, 0);
         };
 
         double dt = dtStart;
@@ -204,7 +204,7 @@ namespace
         std::fill(p.u.begin(), p.u.end(), Vec3::Zero());
         for (std::size_t step = 0; step < maxStageIterations; ++step)
         {
-            search.update(p, box, list, 0);
+            search.update(p, box, list);
             if (overlapForces(p, box, list, hTarget, minGap, slotF) == 0)
             {
                 return Stage::overlapFree;

@@ -157,6 +157,7 @@ NeighbourSearch::NeighbourSearch(const Params& params)
     path_(),
     maxPath_(0),
     time_(0),
+    flowStrain_(0),
     range_(0),
     stats_()
 {
@@ -182,17 +183,19 @@ void NeighbourSearch::accumulate
 (
     const Particles& particles,
     const std::vector<Vec3>& Uinf,
-    double dt
+    double dt,
+    double maxGradU
 )
 {
-    if (Uinf.size() != particles.size() || !(dt >= 0))
+    if (Uinf.size() != particles.size() || !(dt >= 0) || !(maxGradU >= 0))
     {
         throw std::invalid_argument
         (
             "NeighbourSearch::accumulate: need U_inf at each of the "
           + std::to_string(particles.size()) + " particles (got "
-          + std::to_string(Uinf.size()) + ") and dt >= 0 (got "
-          + std::to_string(dt) + ")"
+          + std::to_string(Uinf.size()) + "), dt >= 0 (got "
+          + std::to_string(dt) + ") and maxGradU >= 0 (got "
+          + std::to_string(maxGradU) + ")"
         );
     }
     // Not built for these particles: the next update() rebuilds anyway
@@ -210,20 +213,14 @@ void NeighbourSearch::accumulate
     }
     maxPath_ = m;
     time_ += dt;
+    flowStrain_ += maxGradU*dt;
 }
 
 
-bool NeighbourSearch::needsRebuild(double maxGradU) const
+bool NeighbourSearch::needsRebuild() const
 {
-    if (!(maxGradU >= 0))
-    {
-        throw std::invalid_argument
-        (
-            "NeighbourSearch: maxGradU must be >= 0, got " + std::to_string(maxGradU)
-        );
-    }
     // written so that a NaN path length also asks for a rebuild
-    return !cells_ || !(2*maxPath_ + maxGradU*range_*time_ <= params_.skin);
+    return !cells_ || !(2*maxPath_ + flowStrain_*range_ <= params_.skin);
 }
 
 
@@ -231,8 +228,7 @@ bool NeighbourSearch::update
 (
     Particles& particles,
     const LeesEdwardsBox& box,
-    PairList& near,
-    double maxGradU
+    PairList& near
 )
 {
     const bool current =
@@ -240,7 +236,7 @@ bool NeighbourSearch::update
      && path_.size() == particles.size()
      && near.nParticles() == particles.size()
      && box.L() == cells_->L();
-    if (current && !needsRebuild(maxGradU))
+    if (current && !needsRebuild())
     {
         return false;
     }
@@ -287,6 +283,7 @@ void NeighbourSearch::rebuild
     path_.assign(particles.size(), 0.0);
     maxPath_ = 0;
     time_ = 0;
+    flowStrain_ = 0;
     range_ = range;
 
     ++stats_.builds;

@@ -98,6 +98,8 @@ Foam::suspensionIO::state Foam::suspensionCloud::initialState() const
     s.nContacts = 0;
     s.box = population.box();
     s.offset = 0;
+    s.strain = 0;
+    s.shearRate = 0;
     s.file = population.dict().name();
     return s;
 }
@@ -108,17 +110,6 @@ void Foam::suspensionCloud::checkSetup(const scalar aMax) const
     const vector& L = start_.box;
     const scalar tol = 1e-5*cmptMax(L);
 
-    // The groups of suspensionProperties are reduced with gammaDot = 1
-    if (flow_->shearRate() != 1)
-    {
-        FatalIOErrorInFunction(properties_.ambientFlowDict())
-            << "The mean shear rate (entry 'shearRate') of the ambient flow"
-            << " is " << flow_->shearRate() << "; " << properties_.name()
-            << " is in reduced units a0 = eta0 = gammaDot = 1, so it must be"
-            << " 1 (electroChemical/shearRateRatio sets gammaDot/gammaDot0;"
-            << " with units dimensional, dimensional/gammaDot sets gammaDot)"
-            << nl << exit(FatalIOError);
-    }
     // A flow the solver selected must know the particle box (its periodic
     // part lives in it)
     if (cmptMax(cmptMag(flow_->box() - L)) > tol)
@@ -147,15 +138,15 @@ void Foam::suspensionCloud::checkSetup(const scalar aMax) const
                 << exit(FatalIOError);
         }
 
-        suspension::LeesEdwardsBox box(toEigen(L), flow_->shearRate());
-        box.setTime(start_.time);
+        suspension::LeesEdwardsBox box(toEigen(L), start_.shearRate);
+        box.setStrain(start_.strain);
         if (mag(box.offset() - start_.offset) > tol)
         {
             FatalIOErrorInFunction(start_.file)
                 << "Entry 'offset' = " << start_.offset << " in "
                 << start_.file << " is not the Lees-Edwards offset "
-                << box.offset() << " of time " << start_.time << nl
-                << exit(FatalIOError);
+                << box.offset() << " of the strain " << start_.strain
+                << " (entry 'strain')" << nl << exit(FatalIOError);
         }
     }
 
@@ -233,7 +224,15 @@ void Foam::suspensionCloud::start(const scalar t, const bool forcesGiven)
 {
     try
     {
-        sim_->start(t, forcesGiven);
+        if (forcesGiven)
+        {
+            sim_->start(t, true, suspension::Simulation::Shear{start_.strain, start_.shearRate});
+        }
+        else
+        {
+            sim_->start(t);
+        }
+        flow_->setShearRate(sim_->shearRate());
     }
     catch (const std::invalid_argument& err)
     {
@@ -294,7 +293,7 @@ void Foam::suspensionCloud::failed(const std::string& cause)
     FatalErrorInFunction
         << cause.c_str() << nl
         << "    The last good state (time " << runTime_.timeName()
-        << ", strain " << sim_->time() << ", step " << steps(*sim_) << ") "
+        << ", strain " << sim_->strain() << ", step " << steps(*sim_) << ") "
         << (
                onDisk ? "is on disk, unchanged, in "
              : taken ? "is not written: an earlier run's files hold "
@@ -322,8 +321,9 @@ void Foam::suspensionCloud::reportStart() const
     Info<< "    start        ";
     if (restart_)
     {
-        Info<< "stored suspension of " << start_.file << " (strain "
-            << start_.time << ", " << start_.steps << " steps, "
+        Info<< "stored suspension of " << start_.file << " (time "
+            << start_.time << ", strain " << start_.strain << ", "
+            << start_.steps << " steps, "
             << start_.nContacts << " contacts with history)" << nl;
     }
     else
@@ -420,7 +420,8 @@ namespace
 void Foam::suspensionCloud::reportProgress()
 {
     const suspension::Simulation& sim = *sim_;
-    const scalar etaR = sim.rheology().etaR;
+    const suspension::Rheology r = sim.rheology();
+    const scalar etaR = r.etaR;
     etaRSum_ += etaR;
     ++etaRSamples_;
 
@@ -442,8 +443,13 @@ void Foam::suspensionCloud::reportProgress()
 
     // Whole steps per second, two decimals below 10 (large N: < 1 step/s)
     const scalar rate = (sim.steps() - reportedSteps_)/sinceReport;
-    Info<< "strain " << sim.time()
-        << "  etaR " << etaR << " (mean " << etaRSum_/etaRSamples_ << ")  "
+    Info<< "strain " << sim.strain();
+    if (!flow_->programme().constant())
+    {
+        Info<< "  time " << sim.time() << "  rate " << sim.shearRate()
+            << "  sigma " << r.sigma;
+    }
+    Info<< "  etaR " << etaR << " (mean " << etaRSum_/etaRSamples_ << ")  "
         << (rate < 10 ? std::round(100*rate)/100 : std::round(rate))
         << " steps/s";
     if (const suspension::ImplicitEuler* implicit = sim.implicit())
@@ -510,7 +516,7 @@ Foam::suspensionCloud::suspensionCloud
       ? std::move(flow)
       : ambientFlow::New(properties_.ambientFlowDict(), start_.box, &mesh)
     ),
-    engineFlow_(*flow_),
+    engineFlow_(*flow_, runTime.value(), runTime.endTime().value()),
     committed_(),
     sim_(),
     lastGood_(),
@@ -653,7 +659,7 @@ void Foam::suspensionCloud::evolve()
         const suspension::NonStopArithmetic nonStop;
         if (written_)
         {
-            sim_->start(sim_->time(), true);
+            sim_->start(sim_->time(), true, sim_->shear());
             written_ = false;
         }
         sim_->advance(runTime_.deltaTValue());
@@ -662,6 +668,7 @@ void Foam::suspensionCloud::evolve()
     {
         failed(err.what());
     }
+    flow_->setShearRate(sim_->shearRate());
     meanDeltaT_ = runTime_.deltaTValue()/(sim_->steps() - before);
 
     sim_->checkpoint(lastGood_);

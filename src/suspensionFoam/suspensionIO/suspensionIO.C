@@ -683,7 +683,10 @@ Foam::suspensionIO::state Foam::suspensionIO::readState(const Time& runTime)
     checkEntries
     (
         dict,
-        {"time", "steps", "nParticles", "nContacts", "box", "offset", "files"}
+        {
+            "time", "steps", "nParticles", "nContacts", "box", "offset",
+            "strain", "shearRate", "files"
+        }
     );
 
     state s;
@@ -693,6 +696,10 @@ Foam::suspensionIO::state Foam::suspensionIO::readState(const Time& runTime)
     s.nContacts = getLabelAtLeast(dict, "nContacts", 0);
     s.box = dict.get<vector>("box");
     s.offset = dict.get<scalar>("offset");
+    // A state written before the strain was kept ran at the rate 1 (the
+    // solver required it): its strain is its time
+    s.strain = dict.getOrDefault<scalar>("strain", s.time);
+    s.shearRate = dict.getOrDefault<scalar>("shearRate", 1);
     s.file = dict.objectPath();
 
     if (cmptMin(s.box) <= 0)
@@ -1064,6 +1071,8 @@ void Foam::suspensionIO::write
     dict.add("nContacts", idI.size());
     dict.add("box", toFoam(sim.box().L()));
     dict.add("offset", sim.box().offset());
+    dict.add("strain", sim.strain());
+    dict.add("shearRate", sim.shearRate());
 
     // The files of the time, whole and on disk, with their digests
     dictionary files;

@@ -37,7 +37,7 @@ void Foam::functionObjects::suspensionRheology::writeFileHeader
     for
     (
         const char* column
-      : {"strain", "etaR", "N1", "N2", "Pi", "etaN"}
+      : {"strain", "shearRate", "sigma", "etaR", "N1", "N2", "Pi", "etaN"}
     )
     {
         writeTabbed(os, column);
@@ -66,6 +66,17 @@ void Foam::functionObjects::suspensionRheology::writeFileHeader
 bool Foam::functionObjects::suspensionRheology::summarise(const bool report)
 {
     file().flush();
+    if (!suspensionCloud::lookup(mesh_, name()).flow().programme().constant())
+    {
+        if (report)
+        {
+            Info<< nl << type() << ' ' << name() << ": the shear rate changes"
+                << " in time (shearRate is not a constant): no steady-state"
+                << " summary (an oscillation's moduli: suspensionOscillation)"
+                << nl << endl;
+        }
+        return false;
+    }
     const rheologySeries series(baseFileDir()/name(), time_.value());
     if (series.size() < 2)
     {
@@ -293,11 +304,13 @@ bool Foam::functionObjects::suspensionRheology::write()
     const suspensionCloud& cloud = suspensionCloud::lookup(mesh_, name());
     const suspension::Simulation& sim = cloud.simulation();
     const suspension::Rheology r = cloud.rheology();
-    const scalar strain = sim.flow().shearRate()*sim.time();
-
     OFstream& os = file();
     writeCurrentTime(os);
-    for (const scalar value : {strain, r.etaR, r.N1, r.N2, r.Pi, r.etaN})
+    for
+    (
+        const scalar value
+      : {sim.strain(), sim.shearRate(), r.sigma, r.etaR, r.N1, r.N2, r.Pi, r.etaN}
+    )
     {
         os  << tab << value;
     }
