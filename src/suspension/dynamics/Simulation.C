@@ -325,15 +325,29 @@ std::string Simulation::takeStep(double dt)
     });
     box_.setShearRate(rate);
 
-    // Path of each particle relative to the flow, for the list's skin: the
-    // implicit velocities are those of the flow at the step's rate
+    // A change of rate changes the ambient flow by shift (y, 0, 0) and its
+    // rotation by shift (0, 0, -1/2): the particles keep their velocities
+    // relative to it (Description), so that the velocity of a particle
+    // wrapped earlier stays that of its image at the new rate
+    if (shift != 0)
+    {
+        Particles& p = particles_;
+        #pragma omp parallel for schedule(static) if(threaded(p.size()))
+        for (std::size_t i = 0; i < p.size(); ++i)
+        {
+            p.u[i].x() += shift*p.x[i].y();
+            p.omega[i].z() -= 0.5*shift;
+        }
+    }
+
+    // Path of each particle relative to the flow at the step's rate, for
+    // the list's skin
     const std::vector<FlowSample>& ambient = forces_.ambient();
-    const double uShift = implicit_ ? shift : 0;
     Uinf_.resize(particles_.size());
     for (std::size_t i = 0; i < Uinf_.size(); ++i)
     {
         Uinf_[i] = ambient[i].U;
-        Uinf_[i].x() += uShift*particles_.x[i].y();
+        Uinf_[i].x() += shift*particles_.x[i].y();
     }
     if (implicit_)
     {
