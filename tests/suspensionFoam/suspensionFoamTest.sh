@@ -112,7 +112,7 @@ export OMP_WAIT_POLICY=PASSIVE
 
 source=$(cd "$(dirname "$0")/tiny" && pwd)
 work=$(mktemp -d "${TMPDIR:-/tmp}/suspensionFoamTest.XXXXXX")
-trap 'rm -rf "$work"' EXIT
+[ -n "${WSF_KEEP:-}" ] || trap 'rm -rf "$work"' EXIT
 solver=wavyShearFoam
 . "$(dirname "$0")/../caseTestFunctions.sh"
 
@@ -311,11 +311,25 @@ expectExactRestart()
             "$a/postProcessing/rheology/0/rheology.dat") \
          <(awk '!/^#/' "$b/postProcessing/rheology/0.05/rheology.dat") \
         > /dev/null || fail "$1: rheology.dat rows differ"
-    # and the steady-state summary covers the whole history: the same
+    # and the steady-state summary covers the whole history: the same (a
+    # rate that changes, $2 = programmed, has none)
     summary=postProcessing/rheology/0/rheologySummary.dat
+    if [ "${2:-}" = programmed ]; then
+        [ ! -e "$a/$summary" ] || fail "$1: a summary of a changing rate"
+        return 0
+    fi
     grep -q "from 10 rows" "$a/$summary" || fail "$1: summary not of 10 rows"
     cmp "$a/$summary" "$b/postProcessing/rheology/0.05/rheologySummary.dat" \
         >&2 || fail "$1: the restarted run's summary differs"
+}
+
+# The oscillatory shear rate of strain amplitude $2 and frequency $3 in
+# case $1
+setOscillation()
+{
+    foamDictionary -entry ambientFlow/shearRate -set \
+        "{ type oscillatory; strainAmplitude $2; omega $3; }" \
+        "$work/$1/$properties" > /dev/null 2>&1 || fail "cannot set shearRate"
 }
 
 # Rewrite the groups of case $1 in SI units (units dimensional) for
@@ -418,6 +432,105 @@ run)
 restart)
     softDenseCase a
     expectExactRestart a
+    ;;
+
+programmedRestart)
+    # Under an oscillating rate (two reversals to 0.1) the strain, the
+    # rate and the offset are state: a restart continues bitwise, for the
+    # explicit and an implicit integrator
+    for integrator in velocityVerlet implicitEuler; do
+        softDenseCase $integrator
+        setEntry $integrator $properties integration/integrator $integrator
+        setOscillation $integrator 0.004 60
+        expectExactRestart $integrator programmed
+        state="$work/$integrator/0.1/uniform/suspensionState"
+        awk '$1 == "strain" { s = $2 + 0 } $1 == "shearRate" { r = $2 + 0 }
+             END { exit !(s != 0 && r != 1) }' "$state" \
+            || fail "$integrator: no strain and rate of the programme in $state"
+    done
+    ;;
+
+oscillationDilute)
+    # Stokes drag alone (no lubrication, contact or electro-chemical
+    # forces), overdamped: the particles follow the flow, and the stress is
+    # eta0 (1 + 2.5 phi) times the rate at every instant (the Stokes
+    # stresslets, eq. 9a): eta' = 1 + 2.5 phi, G' = 0. phi is that of the
+    # packed radii (lagrangian d) in the box; the step's mean rate is that
+    # of a row, so G'/G'' = omega dt/2 = 0.0016. Rows start after the first
+    # step: cycles 1 to 3 of [0, 4T] are sampled whole
+    newCase c
+    for model in lubrication contact electroChemical/repulsion \
+        electroChemical/attraction
+    do
+        setEntry c $properties $model/active false
+    done
+    setEntry c $properties integration/integrator overdamped
+    setEntry c $properties integration/maxOverlap 3    # spheres pass through
+    setEntry c $properties ambientFlow/type uniformShear
+    foamDictionary -entry ambientFlow/amplitude -remove "$work/c/$properties" \
+        > /dev/null 2>&1
+    foamDictionary -entry ambientFlow/periods -remove "$work/c/$properties" \
+        > /dev/null 2>&1
+    setOscillation c 0.5 2
+    T=3.14159265358979                  # 2 pi/omega
+    setEntry c $properties integration/deltaT "$(awk -v T=$T 'BEGIN { printf "%.15g", T/2000 }')"
+    setEntry c $control deltaT "$(awk -v T=$T 'BEGIN { printf "%.15g", T/100 }')"
+    setEntry c $control endTime "$(awk -v T=$T 'BEGIN { printf "%.15g", 4*T }')"
+    setEntry c $control writeInterval 1000
+    foamDictionary -entry functions/oscillation -set \
+        "{ type suspensionOscillation; libs (suspensionFunctionObjects); discardCycles 0; }" \
+        "$work/c/$control" > /dev/null 2>&1 || fail "cannot add the function object"
+    (cd "$work/c" && makeSuspension > log.makeSuspension 2>&1) || fail "makeSuspension"
+    runCase c
+    phi=$(listLines "$work/c/0/lagrangian/suspension/d" \
+        | awk -v L="$(foamDictionary -entry box -value "$work/c/0/uniform/suspensionState")" \
+            '{ v += 3.14159265358979*$1*$1*$1/6 }
+             END { gsub(/[()]/, "", L); split(L, b, " "); print v/(b[1]*b[2]*b[3]) }')
+    summary="$work/c/postProcessing/oscillation/0/oscillationSummary.dat"
+    [ -f "$summary" ] || fail "no oscillationSummary.dat"
+    awk -v phi="$phi" '
+        $1 == "etaP" { etaP = $2 } $1 == "Gp" { Gp = $2 } $1 == "Gpp" { Gpp = $2 }
+        $1 == "gamma0" { g0 = $2; n = $4 }
+        END {
+            expected = 1 + 2.5*phi
+            exit !(n == 3 && g0 > 0.4999 && g0 < 0.5001 \
+                   && etaP > 0.99*expected && etaP < 1.01*expected \
+                   && Gp > -0.01*Gpp && Gp < 0.01*Gpp)
+        }' "$summary" \
+        || { cat "$summary" >&2; fail "not eta' = 1 + 2.5 phi (phi = $phi) and G' = 0"; }
+    ;;
+
+badOscillation)
+    # The oscillatory rate's entries, and the function object's omega
+    newCase c
+    setOscillation c 0 1
+    expectInputError c suspensionProperties "strainAmplitude"
+    newCase d
+    setOscillation d 0.1 -2
+    expectInputError d suspensionProperties "omega"
+    # The function object's own entries: an error naming the entry and
+    # controlDict before any step
+    newCase e
+    foamDictionary -entry functions/oscillation -set \
+        "{ type suspensionOscillation; libs (suspensionFunctionObjects); }" \
+        "$work/e/$control" > /dev/null 2>&1 || fail "cannot add the function object"
+    newCase f
+    setOscillation f 0.1 2
+    foamDictionary -entry functions/oscillation -set \
+        "{ type suspensionOscillation; libs (suspensionFunctionObjects); omega 0; }" \
+        "$work/f/$control" > /dev/null 2>&1 || fail "cannot add the function object"
+    for c in e f; do
+        (cd "$work/$c" && wavyShearFoam > log.wavyShearFoam 2>&1) \
+            && fail "$c: wavyShearFoam accepted the function object"
+        log="$work/$c/log.wavyShearFoam"
+        grep -q "FOAM FATAL IO ERROR" "$log" || fail "$c: no FatalIOError"
+        grep -q "controlDict.functions.oscillation" "$log" || fail "$c: no file named"
+        grep -q "^strain " "$log" && fail "$c: time steps were taken"
+    done
+    grep -qF "needs the entry 'omega': the ambient flow's shearRate is 'constant'" \
+        "$work/e/log.wavyShearFoam" || fail "e: the error does not name omega"
+    grep -qF "Entry 'omega' 0 of function object oscillation is not positive" \
+        "$work/f/log.wavyShearFoam" || fail "f: the error does not name omega"
     ;;
 
 implicitRun)
