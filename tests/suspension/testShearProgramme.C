@@ -321,3 +321,168 @@ TEST(ShearProgramme, RestartIsBitwise)
         EXPECT_EQ(a.rheology().sigma, b.rheology().sigma);
     }
 }
+
+
+namespace
+{
+    //- Simple shear whose rate the engine finds for the shear stress
+    //  sigma0 + sigma1 t
+    class StressControlled
+    :
+        public ShearFlow
+    {
+        double sigma0_, sigma1_;
+
+    public:
+
+        StressControlled(double sigma0, double sigma1)
+        :
+            ShearFlow(0.0), sigma0_(sigma0), sigma1_(sigma1)
+        {}
+
+        bool stressControlled() const override { return true; }
+        double shearStress(double t) const override { return sigma0_ + sigma1_*t; }
+        double maxShearRate() const override { return 10; }
+    };
+
+    //- Volume fraction of the particles in the box
+    double volumeFraction(const Particles& p, const LeesEdwardsBox& box)
+    {
+        double v = 0;
+        for (const double a : p.a)
+        {
+            v += 4*pi*a*a*a/3;
+        }
+        return v/box.volume();
+    }
+}
+
+
+TEST(StressControl, DiluteRateIsTheStressOverTheEinsteinViscosity)
+{
+    // Stokes drag alone: the particles follow the flow and the stress is
+    // eta0 (1 + 2.5 phi) gammaDot (the Stokes stresslets, eq. 9a), so the
+    // rate the control finds is sigma/(eta0 (1 + 2.5 phi)), at every step,
+    // for a stress that changes too; the viscosity of the rheology is that
+    const ForceModels drag;
+    const RandomPacking::Result packed = packing(frictional());
+    const StressControlled flow(2.0, 3.0);
+    for (const Integrator integrator :
+        {Integrator::implicitEuler, Integrator::overdamped})
+    {
+        SCOPED_TRACE(static_cast<int>(integrator));
+        Simulation::Params pp = params(integrator);
+        pp.deltaT = 1e-3;
+        pp.maxOverlap = 10;
+        Simulation sim
+        (
+            packed.particles, LeesEdwardsBox(packed.box.L(), 0.0), flow,
+            drag, pp
+        );
+        sim.start(0);
+        const double einstein = 1 + 2.5*volumeFraction(sim.particles(), sim.box());
+        sim.advance(0.005);
+        for (int k = 0; k < 3; ++k)
+        {
+            sim.advance(0.01);
+            const double sigma = flow.shearStress(sim.time());
+            EXPECT_NEAR(sim.shearRate(), sigma/einstein, 1e-9*sigma);
+            EXPECT_NEAR(sim.implicit()->stepShearStress(), sigma, 1e-9*sigma);
+            EXPECT_NEAR(sim.rheology().etaR, einstein, 1e-6);
+        }
+    }
+}
+
+
+TEST(StressControl, FoundRateImposedGivesTheSameStep)
+{
+    // A dense frictional state (Table 1 FR, phi = 0.5): the step that the
+    // control takes for the target stress, and the step taken at the rate
+    // it found as a rate-controlled one from the same state, have the same
+    // velocities to the solver's tolerance, and the stress of the latter,
+    // computed from its own velocities, is the target to that tolerance;
+    // the explicit integrator is refused
+    const ForceModels models = frictional();
+    const RandomPacking::Result packed = packing(models);
+    for (const Integrator integrator :
+        {Integrator::implicitEuler, Integrator::overdamped})
+    {
+        SCOPED_TRACE(static_cast<int>(integrator));
+        Simulation::Params pp = params(integrator);
+        pp.solver.tolerance = 1e-12;
+        pp.solver.maxIterations = 10000;
+        const ShearFlow steady(1.0);
+        Simulation sheared
+        (
+            packed.particles, LeesEdwardsBox(packed.box.L(), 1.0), steady,
+            models, pp
+        );
+        sheared.start(-0.1);
+        sheared.advance(0.1);
+        ASSERT_GT(sheared.summary().nContacts, 0u);
+
+        const double target = 40;
+        const StressControlled control(target, 0);
+        Simulation a(sheared.particles(), sheared.box(), control, models, pp);
+        a.pairs() = sheared.pairs();
+        a.start(0, true, sheared.shear());
+        a.step(1e-3);
+        const double found = a.shearRate();
+        EXPECT_NEAR(a.implicit()->stepShearStress(), target, 1e-10*target);
+        EXPECT_GT(std::abs(found - 1.0), 1e-3);     // not the old rate
+
+        const RateStep imposed(1.0, found);
+        Simulation b(sheared.particles(), sheared.box(), imposed, models, pp);
+        b.pairs() = sheared.pairs();
+        b.start(0, true, sheared.shear());
+        b.step(1e-3);
+        EXPECT_EQ(b.shearRate(), found);
+        EXPECT_NEAR(b.implicit()->stepShearStress(), target, 1e-8*target);
+        double du = 0, scale = 0;
+        for (std::size_t i = 0; i < a.particles().size(); ++i)
+        {
+            du = std::max(du, (a.particles().u[i] - b.particles().u[i]).norm());
+            scale = std::max(scale, b.particles().u[i].norm());
+        }
+        EXPECT_LT(du, 1e-8*scale);
+    }
+    const StressControlled control(40, 0);
+    EXPECT_THROW
+    (
+        Simulation
+        (
+            packed.particles, LeesEdwardsBox(packed.box.L(), 1.0), control,
+            models, params(Integrator::velocityVerlet)
+        ),
+        std::invalid_argument
+    );
+}
+
+
+TEST(StressControl, RestartIsBitwise)
+{
+    // Under stress control the rate is state (the box's, restored with
+    // the shear): a restart continues bitwise
+    const ForceModels models = frictional();
+    const RandomPacking::Result packed = packing(models);
+    const StressControlled flow(30, 20);
+    Simulation a
+    (
+        packed.particles, LeesEdwardsBox(packed.box.L(), 0.0), flow, models,
+        params(Integrator::implicitEuler)
+    );
+    a.start(0);
+    a.advance(0.1);
+    Simulation b(a.particles(), a.box(), flow, models, params(Integrator::implicitEuler));
+    b.pairs() = a.pairs();
+    b.start(a.time(), true, a.shear());
+    a.start(a.time(), true, a.shear());
+    const std::uint64_t before = a.steps();
+    a.advance(0.1);
+    b.advance(0.1);
+    EXPECT_EQ(a.steps() - before, b.steps());
+    EXPECT_EQ(a.particles().x, b.particles().x);
+    EXPECT_EQ(a.particles().u, b.particles().u);
+    EXPECT_EQ(a.shearRate(), b.shearRate());
+    EXPECT_EQ(a.strain(), b.strain());
+}

@@ -105,11 +105,33 @@ void writeCellAndFaceField
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
+namespace
+{
+
+//- Whether dict sets the shear stress instead of the rate: one of the two
+bool stressEntry(const Foam::dictionary& dict)
+{
+    using namespace Foam;
+    const bool stress = dict.found("shearStress", keyType::LITERAL);
+    if (stress && dict.found("shearRate", keyType::LITERAL))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entries 'shearRate' and 'shearStress' in dictionary "
+            << dict.name() << ": give one, the rate (rate control) or the"
+            << " shear stress (stress control)" << nl << exit(FatalIOError);
+    }
+    return stress;
+}
+
+} // End anonymous namespace
+
+
 Foam::ambientFlow::ambientFlow(const dictionary& dict, const vector& box)
 :
     box_(box),
-    programme_(dict, "shearRate"),
-    gammaDot_(programme_.value(0))
+    stressControlled_(stressEntry(dict)),
+    programme_(dict, stressControlled_ ? "shearStress" : "shearRate"),
+    gammaDot_(stressControlled_ ? 0 : programme_.value(0))
 {}
 
 

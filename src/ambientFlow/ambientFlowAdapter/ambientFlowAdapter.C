@@ -37,7 +37,7 @@ suspension::FlowSample Foam::ambientFlowAdapter::sample
 
 double Foam::ambientFlowAdapter::shearRate(const double t) const
 {
-    return flow_.programme().value(t);
+    return flow_.stressControlled() ? 0 : flow_.programme().value(t);
 }
 
 
@@ -59,7 +59,19 @@ double Foam::ambientFlowAdapter::maxShearRate() const
 
 bool Foam::ambientFlowAdapter::shearRateChanges() const
 {
-    return !flow_.programme().constant();
+    return !flow_.stressControlled() && !flow_.programme().constant();
+}
+
+
+bool Foam::ambientFlowAdapter::stressControlled() const
+{
+    return flow_.stressControlled();
+}
+
+
+double Foam::ambientFlowAdapter::shearStress(const double t) const
+{
+    return flow_.programme().value(t);
 }
 
 

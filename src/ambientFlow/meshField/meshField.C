@@ -19,7 +19,7 @@ const Foam::volVectorField& Foam::meshField::lookupField
     const fvMesh* mesh
 )
 {
-    checkEntries(dict, {"type", "shearRate", "field"});
+    checkEntries(dict, {"type", "shearRate", "shearStress", "field"});
     const word name = fieldName(dict);
     const volVectorField* field =
         mesh ? mesh->findObject<volVectorField>(name) : nullptr;

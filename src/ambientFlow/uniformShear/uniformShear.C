@@ -25,7 +25,7 @@ std::unique_ptr<const suspension::ShearFlow> readUniformShear
     const Foam::dictionary& dict
 )
 {
-    Foam::checkEntries(dict, {"type", "shearRate"});
+    Foam::checkEntries(dict, {"type", "shearRate", "shearStress"});
     return std::make_unique<const suspension::ShearFlow>(0.0);
 }
 

@@ -28,7 +28,7 @@ std::unique_ptr<const suspension::ShearFlow> readWavyShear
 {
     using namespace Foam;
 
-    checkEntries(dict, {"type", "shearRate", "amplitude", "periods"});
+    checkEntries(dict, {"type", "shearRate", "shearStress", "amplitude", "periods"});
 
     const interval finite = interval::open(-GREAT, GREAT);
     const scalar amplitude = getScalarIn(dict, "amplitude", finite);

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 namespace suspension
@@ -201,7 +202,8 @@ HydrodynamicResistance::HydrodynamicResistance
     drag_(drag),
     lubrication_(),
     implicitNormalContact_(implicitNormalContact),
-    rateChanges_(shearForces)
+    rateChanges_(shearForces),
+    stokesShear_(Mat3::Zero())
 {
     if (lubrication)
     {
@@ -260,14 +262,17 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
     ambientForces_.resize(6*N);
     shearRows_.resize(rateChanges_ ? nPairs : 0);
     shearForces_.setZero(rateChanges_ ? 6*N : 0);
+    pairStress_.resize(rateChanges_ ? nPairs : 0);
 
-    // The rate of strain of a unit shear rate, for F_s
-    Mat3 unitShear = Mat3::Zero();
-    unitShear(0, 1) = unitShear(1, 0) = 0.5;
+    // A unit shear rate, for F_s and the Stokes stresslet
+    FlowSample unit;
+    unit.gradU(1, 0) = 1;
+    const Mat3 unitShear = unit.E();
 
     // Pass 1: Stokes drag, pair coefficients and the rows of i of each
     // pair; the rows of j wait in pairRows_. Stresslets per block.
     std::vector<Mat3> stokesS(nB, Mat3::Zero());
+    std::vector<Mat3> stokesUnitS(nB, Mat3::Zero());
     std::vector<Mat3> lubricationS(nB, Mat3::Zero());
     #pragma omp parallel for schedule(static) if(threaded(N))
     for (std::size_t blk = 0; blk < nB; ++blk)
@@ -283,6 +288,10 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
             Vec6 b;
             b << d.F, d.T;
             stokesS[blk] += d.S;
+            if (rateChanges_)
+            {
+                stokesUnitS[blk] += drag_.eval(a, unit.U, unit.Omega(), unit).S;
+            }
 
             const Vec6 vi = relativeVelocity(p, fi, i);
             std::uint32_t s = index_.offset[i];
@@ -317,6 +326,7 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
                     shearForces_.segment<3>(6*i) += fS.segment<3>(0);
                     shearForces_.segment<3>(6*i + 3) += fS.segment<3>(6);
                     shearRows_[s] << fS.segment<3>(3), fS.segment<3>(9);
+                    pairStress_[s] = {g.r, fE.segment<3>(0), fS.segment<3>(0)};
                 }
 
                 // Stresslet (9b) of the force on i at the current velocities
@@ -380,12 +390,57 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
     contactIndex_.transpose();
 
     Stresslets S{Mat3::Zero(), Mat3::Zero()};
+    stokesShear_.setZero();
     for (std::size_t blk = 0; blk < nB; ++blk)
     {
         S.stokes += stokesS[blk];
         S.lubrication += lubricationS[blk];
+        stokesShear_ += stokesUnitS[blk];
     }
     return S;
+}
+
+
+Mat3 HydrodynamicResistance::lubricationStresslet
+(
+    const Vector& v,
+    double a,
+    double b
+) const
+{
+    if (!rateChanges_)
+    {
+        throw std::logic_error
+        (
+            "HydrodynamicResistance: the stresslet of given velocities needs"
+            " the data of a resistance constructed with shearForces"
+        );
+    }
+    const std::size_t N = index_.nParticles();
+    const std::size_t nB = reductionBlocks(N);
+    std::vector<Mat3> S(nB, Mat3::Zero());
+    #pragma omp parallel for schedule(static) if(threaded(N))
+    for (std::size_t blk = 0; blk < nB; ++blk)
+    {
+        const std::size_t end = std::min(N, (blk + 1)*reductionBlock);
+        for (std::size_t i = blk*reductionBlock; i < end; ++i)
+        {
+            const Vec6 vi = v.segment<6>(6*i);
+            for (std::uint32_t s = index_.offset[i]; s < index_.offset[i + 1]; ++s)
+            {
+                const PairStress& q = pairStress_[s];
+                Vec6 yi, yj;
+                pairProduct(pairs_[s], vi, v.segment<6>(6*index_.j[s]), yi, yj);
+                S[blk] += symm(outer(q.r, a*q.fE + b*q.fS - yi.head<3>()));
+            }
+        }
+    }
+    Mat3 sum = Mat3::Zero();
+    for (const Mat3& s : S)
+    {
+        sum += s;
+    }
+    return sum;
 }
 
 

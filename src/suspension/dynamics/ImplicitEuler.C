@@ -1,6 +1,10 @@
 #include "dynamics/ImplicitEuler.H"
 #include "dynamics/MoveAndWrap.H"
+#include "dynamics/SimulationError.H"
 
+#include <algorithm>
+#include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 namespace suspension
@@ -22,7 +26,9 @@ ImplicitEuler::ImplicitEuler
         rateChanges
     ),
     solver_(solver),
-    iterations_(0)
+    iterations_(0),
+    stokesXY_(0),
+    stepShearStress_(0)
 {}
 
 
@@ -38,27 +44,24 @@ void ImplicitEuler::evaluate
 {
     const HydrodynamicResistance::Stresslets S =
         resistance_.assemble(p, box, ambient, pairs, contacts);
+    stokesXY_ = S.stokes(0, 1);
     summary.stresslet[contributionIndex("stokes")] = S.stokes;
     summary.stresslet[contributionIndex(Lubrication::contribution)] = S.lubrication;
 }
 
 
-bool ImplicitEuler::solve
+const std::vector<FlowSample>& ImplicitEuler::shiftedFlow
 (
-    Particles& p,
+    const Particles& p,
     const std::vector<FlowSample>& sampled,
-    double shift,
-    double dt
+    double shift
 )
 {
-    const std::size_t N = p.size();
-    const bool parallel = threaded(N);
-    const double invDt = inertia_ ? 1/dt : 0;
-    resistance_.setStep(p, dt, inertia_);
-
-    // The flow at the step's rate: the samples shifted by a simple shear
-    // (U_inf is affine in the rate)
-    if (shift != 0 && !resistance_.rateChanges())
+    if (shift == 0)
+    {
+        return sampled;
+    }
+    if (!resistance_.rateChanges())
     {
         throw std::logic_error
         (
@@ -66,27 +69,37 @@ bool ImplicitEuler::solve
             " needs an integrator constructed with rateChanges"
         );
     }
-    if (shift != 0)
+    const std::size_t N = p.size();
+    shifted_ = sampled;
+    #pragma omp parallel for schedule(static) if(threaded(N))
+    for (std::size_t i = 0; i < N; ++i)
     {
-        shifted_ = sampled;
-        #pragma omp parallel for schedule(static) if(parallel)
-        for (std::size_t i = 0; i < N; ++i)
-        {
-            shifted_[i].U.x() += shift*p.x[i].y();
-            shifted_[i].gradU(1, 0) += shift;
-        }
+        shifted_[i].U.x() += shift*p.x[i].y();
+        shifted_[i].gradU(1, 0) += shift;
     }
-    const std::vector<FlowSample>& ambient = shift != 0 ? shifted_ : sampled;
+    return shifted_;
+}
 
+
+void ImplicitEuler::rightHandSide
+(
+    const Particles& p,
+    const std::vector<FlowSample>& ambient,
+    double shift,
+    double dt
+)
+{
     // V'^n and the right-hand side, relative to the flow at x^n, and the
     // predictor of the warm start, d = dt (du/dt, domega/dt): the last
     // step's rate of change carried over this step
+    const std::size_t N = p.size();
+    const double invDt = inertia_ ? 1/dt : 0;
     const Eigen::VectorXd& Famb = resistance_.ambientForces();
     const Eigen::VectorXd& Fs = resistance_.shearForces();
     v_.resize(6*N);
     b_.resize(6*N);
     d_.resize(6*N);
-    #pragma omp parallel for schedule(static) if(parallel)
+    #pragma omp parallel for schedule(static) if(threaded(N))
     for (std::size_t i = 0; i < N; ++i)
     {
         const Vec3 u = p.u[i] - ambient[i].U;
@@ -105,6 +118,41 @@ bool ImplicitEuler::solve
 
     // The springs' load by the ambient motion and the dashpot's of V'^n
     resistance_.contactRightHandSide(v_, ambient, shift, dt, b_);
+}
+
+
+void ImplicitEuler::setVelocities
+(
+    Particles& p,
+    const std::vector<FlowSample>& ambient,
+    double dt
+) const
+{
+    #pragma omp parallel for schedule(static) if(threaded(p.size()))
+    for (std::size_t i = 0; i < p.size(); ++i)
+    {
+        const Vec3 u = ambient[i].U + v_.segment<3>(6*i);
+        const Vec3 w = ambient[i].Omega() + v_.segment<3>(6*i + 3);
+        p.dudt[i] = (u - p.u[i])/dt;
+        p.domegadt[i] = (w - p.omega[i])/dt;
+        p.u[i] = u;
+        p.omega[i] = w;
+    }
+}
+
+
+bool ImplicitEuler::solve
+(
+    Particles& p,
+    const std::vector<FlowSample>& sampled,
+    double shift,
+    double dt,
+    const StressControl* stress
+)
+{
+    resistance_.setStep(p, dt, inertia_);
+    const std::vector<FlowSample>& ambient = shiftedFlow(p, sampled, shift);
+    rightHandSide(p, ambient, shift, dt);
 
     // Warm start: V'^n moved along d as far as it lowers the error
     // (ConjugateGradient.H)
@@ -114,17 +162,96 @@ bool ImplicitEuler::solve
     {
         return false;
     }
+    if (stress)
+    {
+        stepShearStress_ =
+            stress->eta0*(stress->rate + shift)
+          + (
+                stress->fixedXY + stokesXY_
+              + shift*resistance_.stokesShearStresslet()(0, 1)
+              + resistance_.lubricationStresslet(v_, 1, shift)(0, 1)
+            )/stress->volume;
+    }
+    setVelocities(p, ambient, dt);
+    return true;
+}
 
-    #pragma omp parallel for schedule(static) if(parallel)
+
+bool ImplicitEuler::solveForStress
+(
+    Particles& p,
+    const std::vector<FlowSample>& sampled,
+    const StressControl& control,
+    double dt,
+    double& shift
+)
+{
+    const std::size_t N = p.size();
+    resistance_.setStep(p, dt, inertia_);
+
+    // The right-hand side at the samples' rate, b0, and its change per
+    // unit of rate, b1 = F_s + the contacts' ambient terms of a unit
+    // shear (the velocities relative to the flow do not change with the
+    // rate: Simulation carries them)
+    rightHandSide(p, sampled, 0, dt);
+    b1_ = resistance_.shearForces();
+    Eigen::VectorXd c0 = Eigen::VectorXd::Zero(6*N);
+    resistance_.contactRightHandSide(v_, sampled, 0, dt, c0);
+    resistance_.contactRightHandSide(v_, shiftedFlow(p, sampled, 1), 1, dt, b1_);
+    b1_ -= c0;
+
+    // V'(s) = V'0 + s V'1: two solves
+    statistics_ = solver_.solve(resistance_, b_, v_, &d_);
+    iterations_ += statistics_.iterations;
+    if (!statistics_.converged)
+    {
+        return false;
+    }
+    // From zero: a start from the last step's would make a restart, which
+    // has none, take other iterations
+    v1_.setZero(b1_.size());
+    const ConjugateGradient::Result second = solver_.solve(resistance_, b1_, v1_);
+    iterations_ += second.iterations;
+    statistics_.iterations += second.iterations;
+    statistics_.residual = std::max(statistics_.residual, second.residual);
+    if (!second.converged)
+    {
+        statistics_.converged = false;
+        statistics_.outcome = second.outcome;
+        return false;
+    }
+
+    // The shear stress of the step, sigma0 + s sigma1 (eq. 8), and the
+    // shift that makes it the target
+    const double V = control.volume;
+    const double sigma0 =
+        control.eta0*control.rate
+      + (control.fixedXY + stokesXY_
+       + resistance_.lubricationStresslet(v_, 1, 0)(0, 1))/V;
+    const double sigma1 =
+        control.eta0
+      + (resistance_.stokesShearStresslet()(0, 1)
+       + resistance_.lubricationStresslet(v1_, 0, 1)(0, 1))/V;
+    shift = (control.target - sigma0)/sigma1;
+    if (!(sigma1 > 0) || !std::isfinite(shift))
+    {
+        std::ostringstream msg;
+        msg << "stress control: the shear stress of the step does not grow"
+               " with the shear rate (d sigma/d gammaDot = " << sigma1
+            << ", sigma at the last rate " << sigma0 << ", target "
+            << control.target << ")";
+        throw SimulationError(msg.str());
+    }
+    stepShearStress_ = sigma0 + shift*sigma1;
+
+    v_ += shift*v1_;
+    #pragma omp parallel for schedule(static) if(threaded(N))
     for (std::size_t i = 0; i < N; ++i)
     {
-        const Vec3 u = ambient[i].U + v_.segment<3>(6*i);
-        const Vec3 w = ambient[i].Omega() + v_.segment<3>(6*i + 3);
-        p.dudt[i] = (u - p.u[i])/dt;
-        p.domegadt[i] = (w - p.omega[i])/dt;
-        p.u[i] = u;
-        p.omega[i] = w;
+        p.u[i].x() += shift*p.x[i].y();
+        p.omega[i].z() -= 0.5*shift;
     }
+    setVelocities(p, shiftedFlow(p, sampled, shift), dt);
     return true;
 }
 

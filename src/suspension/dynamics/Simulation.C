@@ -22,7 +22,8 @@ namespace
         const Particles& p,
         const AmbientFlow& flow,
         const Simulation::Params& params,
-        bool implicitNormalContact
+        bool implicitNormalContact,
+        double maxRate
     )
     {
         if (p.size() == 0)
@@ -33,7 +34,7 @@ namespace
         return TimeStepLimits
         (
             models, *aMin, *aMax, params.rho, params.safety, params.integrator,
-            flow.maxVelocityGradient(flow.maxShearRate()), implicitNormalContact
+            flow.maxVelocityGradient(maxRate), implicitNormalContact
         );
     }
 
@@ -59,7 +60,8 @@ namespace
         }
         double contact = std::numeric_limits<double>::infinity();
         double others = contact;
-        const TimeStepLimits explicitNormal = makeLimits(models, p, flow, params, false);
+        const TimeStepLimits explicitNormal =
+            makeLimits(models, p, flow, params, false, flow.maxShearRate());
         for (const TimeStepLimit& l : explicitNormal.all())
         {
             double& v = l.name == "contact" ? contact : others;
@@ -97,7 +99,11 @@ Simulation::Simulation
     ),
     limits_
     (
-        makeLimits(forces_.models(), particles_, flow, params, implicitNormalContact_)
+        makeLimits
+        (
+            forces_.models(), particles_, flow, params, implicitNormalContact_,
+            flow.maxShearRate()
+        )
     ),
     dtMax_(params.deltaT > 0 ? params.deltaT : limits_.deltaT()),
     aMin_(*std::min_element(particles_.a.begin(), particles_.a.end())),
@@ -132,6 +138,15 @@ Simulation::Simulation
             " set deltaT or maxDisplacement"
         );
     }
+    if (flow.stressControlled() && params.integrator == Integrator::velocityVerlet)
+    {
+        throw std::invalid_argument
+        (
+            "Simulation: stress control needs an implicit integrator"
+            " (implicitEuler or overdamped), whose velocities and stress are"
+            " affine in the rate: velocityVerlet has no controller"
+        );
+    }
     if (params.adaptiveThreads && threaded(particles_.size()))
     {
         governor_.emplace(omp_get_max_threads());
@@ -144,7 +159,7 @@ Simulation::Simulation
             params.integrator == Integrator::implicitEuler,
             params.solver,
             implicitNormalContact_,
-            flow.shearRateChanges()
+            flow.shearRateChanges() || flow.stressControlled()
         );
     }
 }
@@ -244,11 +259,14 @@ void Simulation::flowChanged()
             params_.integrator == Integrator::implicitEuler,
             params_.solver,
             normal,
-            flow_.shearRateChanges()
+            flow_.shearRateChanges() || flow_.stressControlled()
         );
     }
     implicitNormalContact_ = normal;
-    limits_ = makeLimits(forces_.models(), particles_, flow_, params_, normal);
+    limits_ = makeLimits
+    (
+        forces_.models(), particles_, flow_, params_, normal, flow_.maxShearRate()
+    );
     dtMax_ = params_.deltaT > 0 ? params_.deltaT : limits_.deltaT();
     if (!(params_.deltaT > 0))
     {
@@ -314,48 +332,83 @@ void Simulation::step(double dt)
 
 std::string Simulation::takeStep(double dt)
 {
-    // The step's mean rate; the ambient samples are those of the last
-    // evaluation, at the rate of the last step
-    const double rate = flow_.meanShearRate(time_, time_ + dt);
-    const double shift = rate - box_.shearRate();
-    const double maxRate = std::max
-    ({
-        std::abs(rate), std::abs(flow_.shearRate(time_)),
-        std::abs(flow_.shearRate(time_ + dt))
-    });
-    box_.setShearRate(rate);
-
-    // A change of rate changes the ambient flow by shift (y, 0, 0) and its
-    // rotation by shift (0, 0, -1/2): the particles keep their velocities
-    // relative to it (Description), so that the velocity of a particle
-    // wrapped earlier stays that of its image at the new rate
-    if (shift != 0)
+    // The step's mean rate (the programme's, or under stress control the
+    // one that gives the target stress) and the velocities u^(n+1) of an
+    // implicit step; the ambient samples are those of the last evaluation,
+    // at the rate of the last step
+    const std::vector<FlowSample>& ambient = forces_.ambient();
+    const double sampledRate = box_.shearRate();
+    double rate;
+    auto stressControl = [&](double target)
     {
-        Particles& p = particles_;
-        #pragma omp parallel for schedule(static) if(threaded(p.size()))
-        for (std::size_t i = 0; i < p.size(); ++i)
+        double fixed = 0;
+        for (std::size_t c = 0; c < summary_.stresslet.size(); ++c)
         {
-            p.u[i].x() += shift*p.x[i].y();
-            p.omega[i].z() -= 0.5*shift;
+            const bool hydrodynamic =
+                c == contributionIndex("stokes")
+             || c == contributionIndex(Lubrication::contribution);
+            fixed += hydrodynamic ? 0 : summary_.stresslet[c](0, 1);
+        }
+        return ImplicitEuler::StressControl
+        {
+            target, forces_.models().drag().params().eta, box_.volume(),
+            sampledRate, fixed
+        };
+    };
+    if (flow_.stressControlled())
+    {
+        ScopedTime timer(times_.hydrodynamics);
+        const ImplicitEuler::StressControl control =
+            stressControl(flow_.shearStress(time_ + dt));
+        double shift;
+        if (!implicit_->solveForStress(particles_, ambient, control, dt, shift))
+        {
+            return solveFailure(dt);
+        }
+        rate = sampledRate + shift;
+        box_.setShearRate(rate);
+    }
+    else
+    {
+        rate = flow_.meanShearRate(time_, time_ + dt);
+        box_.setShearRate(rate);
+        carry(rate - sampledRate);
+        if (implicit_)
+        {
+            // The step's stress as stress control would find it, where the
+            // resistance keeps what it needs (a rate that changes)
+            ScopedTime timer(times_.hydrodynamics);
+            const ImplicitEuler::StressControl stress = stressControl(0);
+            const bool keeps = implicit_->resistance().rateChanges();
+            if
+            (
+                !implicit_->solve
+                (
+                    particles_, ambient, rate - sampledRate, dt,
+                    keeps ? &stress : nullptr
+                )
+            )
+            {
+                return solveFailure(dt);
+            }
         }
     }
+    const double maxRate = flow_.stressControlled()
+      ? std::max(std::abs(rate), std::abs(sampledRate))
+      : std::max
+        ({
+            std::abs(rate), std::abs(flow_.shearRate(time_)),
+            std::abs(flow_.shearRate(time_ + dt))
+        });
 
     // Path of each particle relative to the flow at the step's rate, for
-    // the list's skin
-    const std::vector<FlowSample>& ambient = forces_.ambient();
+    // the list's skin (u^n carried with the rate, or u^(n+1) at x^n)
+    const double shift = rate - sampledRate;
     Uinf_.resize(particles_.size());
     for (std::size_t i = 0; i < Uinf_.size(); ++i)
     {
         Uinf_[i] = ambient[i].U;
         Uinf_[i].x() += shift*particles_.x[i].y();
-    }
-    if (implicit_)
-    {
-        ScopedTime timer(times_.hydrodynamics);
-        if (!implicit_->solve(particles_, ambient, shift, dt))   // u^(n+1) at x^n
-        {
-            return solveFailure(dt);
-        }
     }
     {
         ScopedTime timer(times_.search);
@@ -389,6 +442,49 @@ std::string Simulation::takeStep(double dt)
         VelocityVerlet::correct(particles_, dt);
     }
     return {};
+}
+
+
+void Simulation::carry(double shift)
+{
+    // A change of rate changes the ambient flow by shift (y, 0, 0) and its
+    // rotation by shift (0, 0, -1/2): the particles keep their velocities
+    // relative to it (Description), so that the velocity of a particle
+    // wrapped earlier stays that of its image at the new rate
+    if (shift == 0)
+    {
+        return;
+    }
+    Particles& p = particles_;
+    #pragma omp parallel for schedule(static) if(threaded(p.size()))
+    for (std::size_t i = 0; i < p.size(); ++i)
+    {
+        p.u[i].x() += shift*p.x[i].y();
+        p.omega[i].z() -= 0.5*shift;
+    }
+}
+
+
+void Simulation::followStressControlledRate()
+{
+    // The lubricationGap limit follows |gammaDot|: twice the rate now, or
+    // the flow's bound while the rate is not yet known (0 at a first
+    // start: the state's rate is a function of the state, as a restart
+    // needs)
+    if (!flow_.stressControlled() || params_.deltaT > 0)
+    {
+        return;
+    }
+    const double bound = box_.shearRate() != 0
+      ? std::min(2*std::abs(box_.shearRate()), flow_.maxShearRate())
+      : flow_.maxShearRate();
+    limits_ = makeLimits
+    (
+        forces_.models(), particles_, flow_, params_, implicitNormalContact_,
+        bound
+    );
+    dtMax_ = limits_.deltaT();
+    stepLimitCounts_[0].name = limits_.binding().name;
 }
 
 
@@ -483,6 +579,7 @@ void Simulation::advance(double interval)
     {
         return;
     }
+    followStressControlledRate();
     if (adaptive())
     {
         const double end = time_ + interval;

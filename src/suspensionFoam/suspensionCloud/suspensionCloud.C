@@ -110,6 +110,35 @@ void Foam::suspensionCloud::checkSetup(const scalar aMax) const
     const vector& L = start_.box;
     const scalar tol = 1e-5*cmptMax(L);
 
+    // Stress control: an implicit integrator, and a stress to drive the flow
+    if (flow_->stressControlled())
+    {
+        const dictionary& flowDict = properties_.ambientFlowDict();
+        if
+        (
+            properties_.simulationParams().integrator
+         == suspension::Integrator::velocityVerlet
+        )
+        {
+            FatalIOErrorInFunction(flowDict)
+                << "Stress control (entry 'shearStress' of " << flowDict.name()
+                << ") needs an implicit integrator: integration/integrator"
+                << " implicitEuler or overdamped, whose velocities and"
+                << " stress are affine in the rate, so that the rate of the"
+                << " target stress is found exactly each step;"
+                << " velocityVerlet has no controller" << nl
+                << exit(FatalIOError);
+        }
+        if (!(flow_->programme().max(runTime_.value(), runTime_.endTime().value()) > 0))
+        {
+            FatalIOErrorInFunction(flowDict)
+                << "Entry 'shearStress' of " << flowDict.name() << " is 0"
+                << " over the whole run: no stress drives the flow (a"
+                << " negative stress shears the other way)" << nl
+                << exit(FatalIOError);
+        }
+    }
+
     // A flow the solver selected must know the particle box (its periodic
     // part lives in it)
     if (cmptMax(cmptMag(flow_->box() - L)) > tol)
@@ -444,7 +473,7 @@ void Foam::suspensionCloud::reportProgress()
     // Whole steps per second, two decimals below 10 (large N: < 1 step/s)
     const scalar rate = (sim.steps() - reportedSteps_)/sinceReport;
     Info<< "strain " << sim.strain();
-    if (!flow_->programme().constant())
+    if (!flow_->programme().constant() || flow_->stressControlled())
     {
         Info<< "  time " << sim.time() << "  rate " << sim.shearRate()
             << "  sigma " << r.sigma;

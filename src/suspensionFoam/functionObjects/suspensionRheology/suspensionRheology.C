@@ -103,7 +103,7 @@ bool Foam::functionObjects::suspensionRheology::summarise(const bool report)
     wordList quantities({"etaR", "N1", "N2", "Pi"});
     for (const word& n : series.names())
     {
-        if (n.starts_with("etaR_"))
+        if (n == "shearRate" || n == "sigma" || n.starts_with("etaR_"))
         {
             quantities.append(n);
         }
