@@ -5,6 +5,12 @@
                                            <workDir>/<tag>-<gamma0> of
                                            amplitude.sh; amplitude.png of
                                            every amplitude-*.csv here
+    analyse.py flowcurve <workDir> <tag>   flowcurve-<tag>.csv from the runs
+                                           <workDir>/<tag>-rate-<r> and
+                                           <tag>-stress-<s> of flowcurve.sh
+                                           (their steady summaries);
+                                           flowcurve.png of every
+                                           flowcurve-*.csv here
     analyse.py reversal <caseDir> <tag> <window>
                                            reversal-<tag>.csv and
                                            reversal-<tag>.png from a case
@@ -31,8 +37,8 @@ import sys
 here = os.path.dirname(os.path.abspath(__file__))
 
 # Steady etaR of Table 1 at phi = 0.5 in rate-controlled uniform shear:
-# docs/validation/frictionless.csv (N = 200, delta_lub = 0.05) and
-# docs/rheometry/steady.csv (FR, N = 500: steady.sh)
+# docs/validation/frictionless.csv (N = 200, delta_lub = 0.05) and, for the
+# others, the rate 1 of flowcurve-<tag>.csv (flowcurve.sh)
 STEADY = {"FL": ("docs/validation/frictionless.csv", "frictionless", "0.5", "delta_lub=0.05")}
 
 
@@ -87,12 +93,104 @@ def steady(tag):
         for row in csv.DictReader(open(os.path.join(here, "..", "..", path))):
             if row["case"] == case and row["x"] == phi and row["setting"] == setting:
                 return float(row["value"]), float(row["error"])
-    path = os.path.join(here, "steady.csv")
+    path = os.path.join(here, "flowcurve-%s.csv" % tag)
     if os.path.isfile(path):
         for row in csv.DictReader(open(path)):
-            if row["tag"] == tag and row["control"] == "rate":
+            if row["control"] == "rate" and float(row["setting"]) == 1:
                 return float(row["etaR"]), float(row["etaR_error"])
     return None
+
+
+def read_summary(case):
+    """The latest rheologySummary.dat: {quantity: (mean, error, trusted,
+    strainUsed)}"""
+    paths = sorted(glob.glob(os.path.join(case, "postProcessing", "rheology", "*",
+                                          "rheologySummary.dat")),
+                   key=lambda p: float(p.split(os.sep)[-2]))
+    if not paths:
+        return None
+    q = {}
+    for line in open(paths[-1]):
+        f = line.split()
+        if line.startswith("  ") and len(f) == 10:
+            q[f[0]] = (float(f[1]), float(f[2]), f[9] == "yes", float(f[7]))
+    return q
+
+
+def flowcurve(work, tag):
+    rows = []
+    for case in sorted(glob.glob(os.path.join(work, tag + "-*-*"))):
+        control, setting = os.path.basename(case)[len(tag) + 1:].split("-", 1)
+        q = read_summary(case)
+        if not q or "shearRate" not in q:
+            continue
+        rate, sigma, eta = q["shearRate"], q["sigma"], q["etaR"]
+        if control == "stress":
+            # the target over the mean rate; the rate's relative error
+            etaR = float(setting)/rate[0]
+            etaErr = etaR*rate[1]/abs(rate[0])
+        else:
+            etaR, etaErr = eta[0], eta[1]
+        cpu, wall, rss = cost(case)
+        names, table = joined_rheology(case)
+        steps = table[-1][names.index("steps")] if table else 0
+        strain = table[-1][names.index("strain")] if table else 0
+        rows.append({
+            "tag": tag, "control": control, "setting": float(setting),
+            "shearRate": rate[0], "shearRate_error": rate[1],
+            "sigma": sigma[0], "sigma_error": sigma[1],
+            "etaR": round(etaR, 4), "etaR_error": round(etaErr, 4),
+            "etaR_of_rows": eta[0], "etaR_of_rows_error": eta[1],
+            "contact_share": q["etaR_contact"][0]/eta[0] if "etaR_contact" in q else "",
+            "trusted": "yes" if eta[2] and rate[2] else "no",
+            "steady_strain": eta[3], "strain": round(strain, 3),
+            "steps": int(steps), "cpu_seconds": round(cpu, 1),
+            "cpu_ms_per_step": round(1000*cpu/steps, 3) if steps else "",
+            "wall_seconds": round(wall, 1), "peak_rss_MB": round(rss, 1)})
+    out = os.path.join(here, "flowcurve-%s.csv" % tag)
+    with open(out, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
+        w.writeheader()
+        w.writerows(rows)
+    print("wrote " + out)
+    plot_flowcurve()
+
+
+def plot_flowcurve():
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, (a1, a2) = plt.subplots(1, 2, figsize=(10, 4.5))
+    for path, colour in zip(sorted(glob.glob(os.path.join(here, "flowcurve-*.csv"))),
+                            ("tab:blue", "tab:red", "tab:green", "tab:purple")):
+        tag = os.path.basename(path)[len("flowcurve-"):-len(".csv")]
+        rows = list(csv.DictReader(open(path)))
+        for control, marker in (("rate", "o"), ("stress", "s")):
+            r = sorted((x for x in rows if x["control"] == control),
+                       key=lambda x: float(x["sigma"]))
+            if not r:
+                continue
+            sig = [float(x["setting"]) if control == "stress" else float(x["sigma"]) for x in r]
+            eta = [float(x["etaR"]) for x in r]
+            err = [float(x["etaR_error"]) for x in r]
+            rate = [float(x["shearRate"]) for x in r]
+            kw = dict(fmt=marker + "-", color=colour, mfc="none" if control == "stress" else colour,
+                      label="%s, %s control" % (tag, control))
+            a1.errorbar(sig, eta, yerr=err, **kw)
+            a2.errorbar(rate, eta, yerr=err, **kw)
+    for ax, x in ((a1, r"shear stress $\sigma$ [$\eta_0\dot\gamma_{ref}$]"),
+                  (a2, r"shear rate $\dot\gamma$ [$\dot\gamma_{ref}$]")):
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_xlabel(x)
+        ax.set_ylabel(r"$\eta_r$")
+        ax.grid(alpha=0.3, which="both")
+        ax.legend(fontsize=8)
+    fig.suptitle("Steady flow curves: rate and stress control")
+    fig.tight_layout()
+    out = os.path.join(here, "flowcurve.png")
+    fig.savefig(out, dpi=120)
+    print("wrote " + out)
 
 
 def amplitude(work, tag):
@@ -244,6 +342,8 @@ def reversal(case, tag, window):
 if __name__ == "__main__":
     if len(sys.argv) == 4 and sys.argv[1] == "amplitude":
         amplitude(sys.argv[2], sys.argv[3])
+    elif len(sys.argv) == 4 and sys.argv[1] == "flowcurve":
+        flowcurve(sys.argv[2], sys.argv[3])
     elif len(sys.argv) == 5 and sys.argv[1] == "reversal":
         reversal(sys.argv[2], sys.argv[3], float(sys.argv[4]))
     else:

@@ -9,7 +9,9 @@
 # layout of suspensionRheology) the start-up and the mean of etaR with its
 # error bar are marked and reported, a mean without an error bar too; of a
 # restarted run the summary of the latest start time is used; a summary
-# that cannot be read is an error naming it (no traceback).
+# that cannot be read is an error naming it (no traceback). A rate that
+# changes draws programme.png, reversal.png and lissajous.png; a constant
+# one none of them.
 #   suspensionPlotTest.sh <projectDir>
 #------------------------------------------------------------------------------
 set -euo pipefail
@@ -86,4 +88,23 @@ fi
 grep -q "cannot read $rheo/0.002/rheologySummary.dat" "$work/log" || { cat "$work/log"; fail "the error does not name the summary"; }
 grep -q Traceback "$work/log" && fail "a traceback instead of an error"
 
-echo "suspensionPlot: both plots of renamed function-object folders, the steady state marked from rheologySummary.dat"
+
+# A constant rate draws no programme plots; a rate that reverses (the
+# reference rows with the rate's sign changed half-way) and an oscillation
+# summary draw programme.png, reversal.png and lissajous.png
+grep -q "programme.png\|lissajous.png\|reversal.png" "$work/log" \
+    && fail "programme plots of a constant rate"
+rm -r "$rheo/0.002"
+awk 'BEGIN { OFS = "\t" } /^#/ { print; next } { n++; if (n > 2) { $3 = -$3; $4 = -$4 } print }' \
+    "$rheo/0/rheology.dat" > "$work/reversed.dat"
+mv "$work/reversed.dat" "$rheo/0/rheology.dat"
+mkdir -p "$work/postProcessing/osc/0"
+printf '# Oscillatory shear at omega = 1000, time 0.004: 1 whole cycles\n' \
+    > "$work/postProcessing/osc/0/oscillationSummary.dat"
+"$plot" -case "$work" > "$work/log" 2>&1 || { cat "$work/log"; fail "suspensionPlot of a programme"; }
+for png in programme reversal lissajous; do
+    f=$work/postProcessing/plots/$png.png
+    grep -q "wrote $f" "$work/log" || fail "$png.png not written for a programme"
+    [ "$(stat -c %s "$f")" -gt 10000 ] || fail "$png.png is almost empty"
+done
+echo "suspensionPlot: both plots of renamed function-object folders, the steady state marked from rheologySummary.dat, the programme plots of a rate that changes"

@@ -448,6 +448,69 @@ programmedRestart)
              END { exit !(s != 0 && r != 1) }' "$state" \
             || fail "$integrator: no strain and rate of the programme in $state"
     done
+    # and under stress control (a stress that changes), whose rate is the
+    # engine's
+    softDenseCase stress
+    setEntry stress $properties integration/integrator implicitEuler
+    foamDictionary -entry ambientFlow/shearRate -remove "$work/stress/$properties" \
+        > /dev/null 2>&1
+    foamDictionary -entry ambientFlow/shearStress -add \
+        "table ((0 5) (0.1 15))" "$work/stress/$properties" > /dev/null 2>&1 \
+        || fail "cannot set shearStress"
+    expectExactRestart stress programmed
+    ;;
+
+stressControlDilute)
+    # Stokes drag alone, overdamped, under the shear stress 2: the rate is
+    # sigma/(eta0 (1 + 2.5 phi)) in every row (the Stokes stresslets, eq.
+    # 9a), phi that of the packed radii in the box
+    newCase c
+    for model in lubrication contact electroChemical/repulsion \
+        electroChemical/attraction
+    do
+        setEntry c $properties $model/active false
+    done
+    setEntry c $properties integration/integrator overdamped
+    setEntry c $properties integration/deltaT 1e-4
+    setEntry c $properties integration/maxOverlap 3
+    foamDictionary -entry ambientFlow/shearRate -remove "$work/c/$properties" \
+        > /dev/null 2>&1
+    foamDictionary -entry ambientFlow/shearStress -add 2 "$work/c/$properties" \
+        > /dev/null 2>&1 || fail "cannot set shearStress"
+    (cd "$work/c" && makeSuspension > log.makeSuspension 2>&1) || fail "makeSuspension"
+    runCase c
+    phi=$(listLines "$work/c/0/lagrangian/suspension/d" \
+        | awk -v L="$(foamDictionary -entry box -value "$work/c/0/uniform/suspensionState")" \
+            '{ v += 3.14159265358979*$1*$1*$1/6 }
+             END { gsub(/[()]/, "", L); split(L, b, " "); print v/(b[1]*b[2]*b[3]) }')
+    dat="$work/c/postProcessing/rheology/0/rheology.dat"
+    awk -v phi="$phi" -v r="$(column "$dat" shearRate)" '
+        !/^#/ { n++; rate = $r; expected = 2/(1 + 2.5*phi)
+                if (rate < 0.99*expected || rate > 1.01*expected) bad++ }
+        END { exit !(n == 4 && bad == 0) }' "$dat" \
+        || fail "the rate is not 2/(1 + 2.5 phi), phi = $phi"
+    grep -q "^strain .* rate .* sigma " "$work/c/log.wavyShearFoam" \
+        || fail "the progress report does not give the rate in use"
+    ;;
+
+badShearStress)
+    # Stress control with the explicit integrator, with a rate too, and a
+    # stress that is zero over the run
+    newCase c
+    foamDictionary -entry ambientFlow/shearRate -remove "$work/c/$properties" \
+        > /dev/null 2>&1
+    foamDictionary -entry ambientFlow/shearStress -add 10 "$work/c/$properties" \
+        > /dev/null 2>&1 || fail "cannot set shearStress"
+    cp -r "$work/c" "$work/zero"
+    cp -r "$work/c" "$work/both"
+    expectInputError c "Stress control (entry 'shearStress'" \
+        "integration/integrator implicitEuler or overdamped"
+    setEntry zero $properties integration/integrator implicitEuler
+    setEntry zero $properties ambientFlow/shearStress 0
+    expectInputError zero "Entry 'shearStress'" "is 0 over the whole run"
+    foamDictionary -entry ambientFlow/shearRate -add 1 "$work/both/$properties" \
+        > /dev/null 2>&1
+    expectInputError both "Entries 'shearRate' and 'shearStress'"
     ;;
 
 oscillationDilute)
