@@ -266,6 +266,18 @@ wrongFlow)
     foamDictionary -entry ambientFlow -set "{ type uniformShear; shearRate 1; }" \
         "$work/c/$properties" > /dev/null
     expectInputError c "suspensionProperties" "ambientFlow" "meshField"
+    # stress control is not taken; a rate programme is (the oscillation
+    # runs)
+    newCase d
+    foamDictionary -entry ambientFlow/shearRate -remove "$work/d/$properties" > /dev/null
+    foamDictionary -entry ambientFlow/shearStress -add 5 "$work/d/$properties" > /dev/null
+    setEntry d $properties integration/integrator implicitEuler
+    expectInputError d "suspensionProperties" "not stress control (entry 'shearStress')"
+    newCase e
+    foamDictionary -entry ambientFlow/shearRate -set \
+        "{ type oscillatory; strainAmplitude 0.01; omega 20; }" "$work/e/$properties" > /dev/null
+    setEntry e $control endTime 0.02
+    runCoupled e
     ;;
 
 halfStoredFlow)

@@ -178,7 +178,7 @@ bool storedFlow(IOobject& U, IOobject& sigma)
 
 //- The particles' flow must be the solved one, ambientFlow meshField (on
 //  another field than U it would have stopped already: the mesh holds
-//  no other)
+//  no other), at an imposed rate
 void checkFlow(const suspensionCloud& particles, const volVectorField& U)
 {
     if (!isA<meshField>(particles.flow()))
@@ -188,6 +188,15 @@ void checkFlow(const suspensionCloud& particles, const volVectorField& U)
             << " 'type' of ambientFlow must be " << meshField::typeName
             << " with field " << U.name() << ", not "
             << particles.flow().type() << nl << exit(FatalIOError);
+    }
+    if (particles.flow().stressControlled())
+    {
+        FatalIOErrorInFunction(particles.properties().ambientFlowDict())
+            << "suspensionCoupledFoam takes the mean shear rate (entry"
+            << " 'shearRate', any Function1 of time), not stress control"
+            << " (entry 'shearStress'): the perturbation's balance is"
+            << " solved about an imposed mean shear" << nl
+            << exit(FatalIOError);
     }
 }
 

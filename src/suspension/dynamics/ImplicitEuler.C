@@ -207,10 +207,20 @@ bool ImplicitEuler::solveForStress
     {
         return false;
     }
-    // From zero: a start from the last step's would make a restart, which
-    // has none, take other iterations
+    // From zero moved along V'0/gammaDot_s to the energy minimum on that
+    // line (where the stress is the rate's, V' is nearly proportional to
+    // it): a start from the state, as a restart needs, not from the last
+    // step's V'1
     v1_.setZero(b1_.size());
-    const ConjugateGradient::Result second = solver_.solve(resistance_, b1_, v1_);
+    d1_ = v_;
+    if (control.rate != 0)
+    {
+        d1_ /= control.rate;
+    }
+    const ConjugateGradient::Result second = solver_.solve
+    (
+        resistance_, b1_, v1_, control.rate != 0 ? &d1_ : nullptr
+    );
     iterations_ += second.iterations;
     statistics_.iterations += second.iterations;
     statistics_.residual = std::max(statistics_.residual, second.residual);

@@ -4,6 +4,8 @@
 #include "OFstream.H"
 #include "addToRunTimeSelectionTable.H"
 
+#include <limits>
+
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
 namespace Foam
@@ -128,7 +130,13 @@ bool Foam::functionObjects::suspensionProfiles::write()
             << tab << (n[bin] ? Ux[bin]/n[bin] : 0)
             << tab << flow.U(centre).x()
             << tab << shearRate
-            << tab << sigmaXY/(eta0*shearRate) << nl;
+            << tab
+            << (
+                   shearRate != 0
+                 ? sigmaXY/(eta0*shearRate)
+                 : std::numeric_limits<scalar>::quiet_NaN()
+               )
+            << nl;
     }
 
     return true;
