@@ -219,27 +219,6 @@ namespace
 
     //- A sheared frictional suspension (Table 1 FR groups, phi = 0.5, 60
     //  spheres of radii 1 and 1.4), rolling resistance on, implicit
-    ForceModels withRolling()
-    {
-        ForceModels m = tableOne(1.0);
-        FrictionalContact::Params c = springs(m);
-        c.kr = 0.1*c.kn;
-        m.set(FrictionalContact(c));
-        return m;
-    }
-
-    RandomPacking::Result packing(const ForceModels& m)
-    {
-        RandomPacking::Params pp;
-        pp.phi = 0.5;
-        pp.seed = 5;
-        pp.reach = m.interactionGap() + Simulation::Params().skin;
-        return RandomPacking(pp).pack
-        (
-            SizeDistribution::bidisperse(1.0, 1.4, 1.0).radii(60), rho
-        );
-    }
-
     struct Suspension
     {
         ForceModels models;
@@ -249,8 +228,8 @@ namespace
 
         explicit Suspension(Integrator integrator)
         :
-            models(withRolling()),
-            packed(packing(models))
+            models(test::frictionalWithRolling()),
+            packed(test::packing(models, rho))
         {
             params.rho = rho;
             params.integrator = integrator;

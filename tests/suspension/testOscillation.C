@@ -102,3 +102,24 @@ TEST(Oscillation, BadInputThrows)
     EXPECT_THROW(Oscillation(t, g, {0}, 1, 0), std::invalid_argument);
     EXPECT_EQ(Oscillation(t, g, s, 1, 0).cycles().size(), 0u);
 }
+
+
+TEST(Oscillation, DriftOfTheStrainIsTakenOut)
+{
+    // A mean rate 0.2 under the oscillation (OpenFOAM's sine with a
+    // level): the strain drifts by 0.2 T a cycle, and the moduli are those
+    // without the drift
+    const double omega = 1.0, gamma0 = 0.3;
+    Samples s = synthetic(omega, gamma0, 3, 5, 0, 2*pi/400, 2*pi*4.5);
+    for (std::size_t k = 0; k < s.t.size(); ++k)
+    {
+        s.gamma[k] += 0.2*s.t[k];
+    }
+    const Oscillation osc(s.t, s.gamma, s.sigma, omega, 1);
+    EXPECT_NEAR(osc.estimate(&Oscillation::Cycle::Gp).mean, 3, 1e-3);
+    EXPECT_NEAR(osc.estimate(&Oscillation::Cycle::Gpp).mean, 5, 1e-3);
+    EXPECT_NEAR(osc.estimate(&Oscillation::Cycle::gamma0).mean, gamma0, 1e-4);
+    // no oscillation at all
+    std::vector<double> flat(s.t.size(), 1.0);
+    EXPECT_THROW(Oscillation(s.t, flat, s.sigma, omega, 0), std::invalid_argument);
+}

@@ -76,26 +76,32 @@ namespace
         bool shearRateChanges() const override { return true; }
     };
 
-    //- Table 1 FR with rolling springs on 60 spheres at phi = 0.5
-    ForceModels frictional()
-    {
-        ForceModels m = test::lubricatedContacts(0.05, 4e5, 1.0);
-        FrictionalContact::Params c = m.get<FrictionalContact>()->params();
-        c.kr = 0.1*c.kn;
-        m.set(FrictionalContact(c));
-        return m;
-    }
+    //- Table 1 FR with rolling springs, and 60 spheres packed at 0.5
+    ForceModels frictional() { return test::frictionalWithRolling(); }
 
     RandomPacking::Result packing(const ForceModels& m)
     {
-        RandomPacking::Params pp;
-        pp.phi = 0.5;
-        pp.seed = 5;
-        pp.reach = m.interactionGap() + Simulation::Params().skin;
-        return RandomPacking(pp).pack
+        return test::packing(m, rho);
+    }
+
+    //- A run of `models` in simple shear at the rate 1 to t = 0 from the
+    //  packing, with contacts
+    Simulation sheared
+    (
+        const ForceModels& models,
+        const RandomPacking::Result& packed,
+        const ShearFlow& steady,
+        const Simulation::Params& pp
+    )
+    {
+        Simulation sim
         (
-            SizeDistribution::bidisperse(1.0, 1.4, 1.0).radii(60), rho
+            packed.particles, LeesEdwardsBox(packed.box.L(), 1.0), steady,
+            models, pp
         );
+        sim.start(-0.1);
+        sim.advance(0.1);
+        return sim;
     }
 
     Simulation::Params params(Integrator integrator)
@@ -234,13 +240,7 @@ TEST(ShearProgramme, ImplicitStepAtAnotherRateIsTheStepOfThatFlow)
         pp.solver.tolerance = 1e-12;
         pp.solver.maxIterations = 10000;
         const ShearFlow steady(1.0);
-        Simulation sheared
-        (
-            packed.particles, LeesEdwardsBox(packed.box.L(), 1.0), steady,
-            models, pp
-        );
-        sheared.start(-0.1);
-        sheared.advance(0.1);
+        const Simulation sheared = ::sheared(models, packed, steady, pp);
         ASSERT_GT(sheared.summary().nContacts, 0u);
         const Simulation::Shear at1 = sheared.shear();
 
@@ -412,13 +412,7 @@ TEST(StressControl, FoundRateImposedGivesTheSameStep)
         pp.solver.tolerance = 1e-12;
         pp.solver.maxIterations = 10000;
         const ShearFlow steady(1.0);
-        Simulation sheared
-        (
-            packed.particles, LeesEdwardsBox(packed.box.L(), 1.0), steady,
-            models, pp
-        );
-        sheared.start(-0.1);
-        sheared.advance(0.1);
+        const Simulation sheared = ::sheared(models, packed, steady, pp);
         ASSERT_GT(sheared.summary().nContacts, 0u);
 
         const double target = 40;

@@ -14,7 +14,8 @@ Description
 
     Set-up: constant/suspensionProperties (see suspensionProperties.H). The
     mesh spans the particle box; it carries the Eulerian output only.
-    Units are reduced (a0 = eta0 = gammaDot = 1): time is strain.
+    Units are reduced (a0 = eta0 = gammaDot = 1): time is strain at the
+    reference rate (a rate programme or stress control: docs/rheometry.md).
 
     The OpenFOAM time step deltaT is the sampling interval: each time step
     advances the particles by deltaT in engine steps of the stability

@@ -207,19 +207,38 @@ bool ImplicitEuler::solveForStress
     {
         return false;
     }
-    // From zero moved along V'0/gammaDot_s to the energy minimum on that
-    // line (where the stress is the rate's, V' is nearly proportional to
-    // it): a start from the state, as a restart needs, not from the last
-    // step's V'1
+    // The shear stress of the step at the samples' rate, sigma0 (eq. 8)
+    const double V = control.volume;
+    const double sigma0 =
+        control.eta0*control.rate
+      + (control.fixedXY + stokesXY_
+       + resistance_.lubricationStresslet(v_, 1, 0)(0, 1))/V;
+
+    // V'1 from zero moved along V'0/gammaDot_s to the energy minimum on
+    // that line (where the stress is the rate's, V' is nearly proportional
+    // to it): a start from the state, as a restart needs. Its error enters
+    // V' times the shift s, which is small where the rate changes little
+    // in a step: the tolerance is that of V' over the shift estimated with
+    // the hydrodynamic stress taken proportional to the rate (at most
+    // 1e-3), so that s V'1 meets the tolerance of V'
     v1_.setZero(b1_.size());
     d1_ = v_;
+    double tolerance = solver_.params().tolerance;
     if (control.rate != 0)
     {
         d1_ /= control.rate;
+        const double slope = std::abs((sigma0 - control.fixedXY/V)/control.rate);
+        const double estimate = std::abs((control.target - sigma0)/slope);
+        tolerance = std::min
+        (
+            1e-3,
+            tolerance*std::abs(control.rate)/std::max(estimate, 1e-300)
+        );
+        tolerance = std::max(tolerance, solver_.params().tolerance);
     }
     const ConjugateGradient::Result second = solver_.solve
     (
-        resistance_, b1_, v1_, control.rate != 0 ? &d1_ : nullptr
+        resistance_, b1_, v1_, control.rate != 0 ? &d1_ : nullptr, tolerance
     );
     iterations_ += second.iterations;
     statistics_.iterations += second.iterations;
@@ -231,13 +250,8 @@ bool ImplicitEuler::solveForStress
         return false;
     }
 
-    // The shear stress of the step, sigma0 + s sigma1 (eq. 8), and the
-    // shift that makes it the target
-    const double V = control.volume;
-    const double sigma0 =
-        control.eta0*control.rate
-      + (control.fixedXY + stokesXY_
-       + resistance_.lubricationStresslet(v_, 1, 0)(0, 1))/V;
+    // Its change per unit of rate, sigma1, and the shift that makes the
+    // stress of the step the target
     const double sigma1 =
         control.eta0
       + (resistance_.stokesShearStresslet()(0, 1)

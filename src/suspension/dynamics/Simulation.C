@@ -201,6 +201,25 @@ void Simulation::start
     }
     box_.setShearRate(shear ? shear->rate : flow_.shearRate(t));
     box_.setStrain(strain_);
+
+    // A state of another rate than a constant programme's (a restart after
+    // the rate was changed): its first step changes the rate, which the
+    // implicit integrator must be able to do
+    if
+    (
+        implicit_ && !implicit_->resistance().rateChanges()
+     && box_.shearRate() != flow_.shearRate(t)
+    )
+    {
+        implicit_.emplace
+        (
+            forces_.models(),
+            params_.integrator == Integrator::implicitEuler,
+            params_.solver,
+            implicitNormalContact_,
+            true
+        );
+    }
     for (std::size_t i = 0; i < particles_.size(); ++i)
     {
         if (!box_.contains(particles_.x[i]))
@@ -341,12 +360,12 @@ std::string Simulation::takeStep(double dt)
     double rate;
     auto stressControl = [&](double target)
     {
+        const int stokes = contributionIndex("stokes");
+        const int lubrication = contributionIndex(Lubrication::contribution);
         double fixed = 0;
-        for (std::size_t c = 0; c < summary_.stresslet.size(); ++c)
+        for (int c = 0; c < int(summary_.stresslet.size()); ++c)
         {
-            const bool hydrodynamic =
-                c == contributionIndex("stokes")
-             || c == contributionIndex(Lubrication::contribution);
+            const bool hydrodynamic = c == stokes || c == lubrication;
             fixed += hydrodynamic ? 0 : summary_.stresslet[c](0, 1);
         }
         return ImplicitEuler::StressControl
@@ -469,14 +488,13 @@ void Simulation::followStressControlledRate()
 {
     // The lubricationGap limit follows |gammaDot|: twice the rate now, or
     // the flow's bound while the rate is not yet known (0 at a first
-    // start: the state's rate is a function of the state, as a restart
-    // needs)
+    // start); a function of the state, as a restart needs
     if (!flow_.stressControlled() || params_.deltaT > 0)
     {
         return;
     }
     const double bound = box_.shearRate() != 0
-      ? std::min(2*std::abs(box_.shearRate()), flow_.maxShearRate())
+      ? 2*std::abs(box_.shearRate())
       : flow_.maxShearRate();
     limits_ = makeLimits
     (
@@ -579,12 +597,12 @@ void Simulation::advance(double interval)
     {
         return;
     }
-    followStressControlledRate();
-    if (adaptive())
+    if (adaptive() || flow_.stressControlled())
     {
         const double end = time_ + interval;
         for (;;)
         {
+            followStressControlledRate();
             const double remaining = end - time_;
             const auto [bound, limit] = stepBound();
             const double n =

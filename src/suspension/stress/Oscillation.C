@@ -20,6 +20,7 @@ namespace
     {
         Complex c1;
         Complex c3;
+        double scale;   // largest |f| of the cycle
     };
 
     Coefficients coefficients
@@ -28,7 +29,8 @@ namespace
         const std::vector<double>& f,
         double a,
         double b,
-        double omega
+        double omega,
+        bool detrend = false
     )
     {
         // The samples inside (a, b) and the interpolated ends
@@ -39,7 +41,8 @@ namespace
             {
                 ++k;
             }
-            const double w = (s - t[k - 1])/(t[k] - t[k - 1]);
+            const double h = t[k] - t[k - 1];
+            const double w = h > 0 ? (s - t[k - 1])/h : 1;
             return (1 - w)*f[k - 1] + w*f[k];
         };
         std::vector<double> ts{a};
@@ -55,7 +58,22 @@ namespace
         ts.push_back(b);
         fs.push_back(at(b));
 
-        Coefficients c{0, 0};
+        // A drift over the cycle (a mean rate) taken out: its line has a
+        // first harmonic of its own
+        if (detrend)
+        {
+            const double slope = (fs.back() - fs.front())/(b - a);
+            for (std::size_t k = 0; k < ts.size(); ++k)
+            {
+                fs[k] -= slope*(ts[k] - a);
+            }
+        }
+
+        Coefficients c{0, 0, 0};
+        for (const double x : fs)
+        {
+            c.scale = std::max(c.scale, std::abs(x));
+        }
         for (std::size_t k = 0; k + 1 < ts.size(); ++k)
         {
             const double h = ts[k + 1] - ts[k];
@@ -109,8 +127,23 @@ Oscillation::Oscillation
         ++n
     )
     {
-        const Coefficients g = coefficients(t, gamma, n*T, (n + 1)*T, omega);
+        const Coefficients g =
+            coefficients(t, gamma, n*T, (n + 1)*T, omega, true);
         const Coefficients s = coefficients(t, sigma, n*T, (n + 1)*T, omega);
+        // A first harmonic of round-off size is none
+        const bool strain = std::abs(g.c1) > 1e-9*g.scale;
+        const bool stress = std::abs(s.c1) > 1e-9*s.scale;
+        if (!strain || !stress)
+        {
+            throw std::invalid_argument
+            (
+                "Oscillation: no first harmonic of the "
+              + std::string(strain ? "stress" : "strain")
+              + " in the cycle from t = " + std::to_string(n*T)
+              + " at omega = " + std::to_string(omega)
+              + ": not an oscillation at that frequency"
+            );
+        }
         const Complex G = s.c1/g.c1;
         cycles_.push_back
         ({

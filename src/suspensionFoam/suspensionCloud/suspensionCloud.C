@@ -545,7 +545,10 @@ Foam::suspensionCloud::suspensionCloud
       ? std::move(flow)
       : ambientFlow::New(properties_.ambientFlowDict(), start_.box, &mesh)
     ),
-    engineFlow_(*flow_, runTime.value(), runTime.endTime().value()),
+    engineFlow_
+    (
+        *flow_, min(scalar(0), runTime.value()), runTime.endTime().value()
+    ),
     committed_(),
     sim_(),
     lastGood_(),

@@ -220,7 +220,7 @@ void Foam::suspensionUnits::report(Ostream& os) const
     {
         return;
     }
-    os  << "Dimensional input (SI; times stay in strain units gammaDot t)"
+    os  << "Dimensional input (SI; times stay in units of 1/gammaDot)"
         << nl;
     for (const quantity& q : inputs_)
     {

@@ -6,6 +6,7 @@
 #include "addToRunTimeSelectionTable.H"
 
 #include <iomanip>
+#include <stdexcept>
 #include <sstream>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -31,11 +32,25 @@ void Foam::functionObjects::suspensionOscillation::analyse(const bool report)
     (
         baseFileDir()/rheology_, time_.value() + 0.5*time_.deltaTValue()
     );
-    const suspension::Oscillation osc
-    (
-        series.column("Time"), series.column("strain"), series.column("sigma"),
-        omega_, discardCycles_
-    );
+    const suspension::Oscillation osc = [&]()
+    {
+        try
+        {
+            return suspension::Oscillation
+            (
+                series.column("Time"), series.column("strain"),
+                series.column("sigma"), omega_, discardCycles_
+            );
+        }
+        catch (const std::invalid_argument& err)
+        {
+            FatalErrorInFunction
+                << "Function object " << name() << " cannot analyse "
+                << baseFileDir()/rheology_ << ": " << err.what() << nl
+                << exit(FatalError);
+            throw;
+        }
+    }();
 
     const fileName dir
     (

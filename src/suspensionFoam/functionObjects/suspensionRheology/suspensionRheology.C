@@ -66,7 +66,8 @@ void Foam::functionObjects::suspensionRheology::writeFileHeader
 bool Foam::functionObjects::suspensionRheology::summarise(const bool report)
 {
     file().flush();
-    if (!suspensionCloud::lookup(mesh_, name()).flow().programme().constant())
+    const ambientFlow& flow = suspensionCloud::lookup(mesh_, name()).flow();
+    if (!flow.programme().constant())
     {
         if (report)
         {
@@ -84,7 +85,12 @@ bool Foam::functionObjects::suspensionRheology::summarise(const bool report)
     }
     const std::vector<double>& strain = series.column("strain");
 
-    // One steady window for every quantity: the transient of etaR
+    // Under stress control the viscosity is sigma/<shearRate>: the rate
+    // leads (its transient, its error bar), not the rows' ratio
+    const bool stress = flow.stressControlled() && series.found("shearRate");
+    const word lead(stress ? "shearRate" : "etaR");
+
+    // One steady window for every quantity: the transient of the lead
     suspension::SteadyState::Options opt;
     opt.minStrain = minSteadyStrain_;
     if (discardStrain_ >= 0)
@@ -95,15 +101,18 @@ bool Foam::functionObjects::suspensionRheology::summarise(const bool report)
     {
         const std::size_t d = suspension::SteadyState::mserTruncation
         (
-            series.column("etaR"), opt.batch
+            series.column(lead), opt.batch
         );
         opt.discardStrain = strain[std::min(d, strain.size() - 1)] - strain[0];
     }
 
-    wordList quantities({"etaR", "N1", "N2", "Pi"});
+    wordList quantities({lead});
     for (const word& n : series.names())
     {
-        if (n == "shearRate" || n == "sigma" || n.starts_with("etaR_"))
+        const bool summarised =
+            n == "etaR" || n == "N1" || n == "N2" || n == "Pi"
+         || n == "shearRate" || n == "sigma" || n.starts_with("etaR_");
+        if (summarised && n != lead)
         {
             quantities.append(n);
         }
@@ -114,12 +123,24 @@ bool Foam::functionObjects::suspensionRheology::summarise(const bool report)
     {
         states.emplace_back(strain, series.column(q), opt);
     }
-    const suspension::SteadyState& etaR = states[0];
+    const suspension::SteadyState& leading = states[0];
     const scalar relError =
-        etaR.nBlocks() > 1 && etaR.mean() != 0
-      ? etaR.standardError()/mag(etaR.mean())
+        leading.nBlocks() > 1 && leading.mean() != 0
+      ? leading.standardError()/mag(leading.mean())
       : GREAT;
-    const bool precise = etaR.reliable() && relError <= precision_;
+    const bool precise = leading.reliable() && relError <= precision_;
+    scalar viscosity = leading.mean();
+    scalar viscosityError = leading.standardError();
+    if (stress)
+    {
+        const suspension::SteadyState& sigma = states[quantities.find("sigma")];
+        viscosity = sigma.mean()/leading.mean();
+        viscosityError = mag(viscosity)*std::sqrt
+        (
+            sqr(relError)
+          + sqr(sigma.mean() != 0 ? sigma.standardError()/sigma.mean() : 0.0)
+        );
+    }
 
     std::ostringstream table;
     table
@@ -151,10 +172,12 @@ bool Foam::functionObjects::suspensionRheology::summarise(const bool report)
 
     std::ostringstream verdict;
     verdict
-        << "etaR = " << std::setprecision(6) << etaR.mean() << " +/- "
-        << etaR.standardError() << " (" << std::setprecision(3)
-        << 100*relError << " %, " << etaR.nBlocks() << " blocks of "
-        << std::setprecision(4) << etaR.blockStrain() << " strain)";
+        << "etaR = " << (stress ? "<sigma>/<shearRate> = " : "")
+        << std::setprecision(6) << viscosity << " +/- " << viscosityError
+        << " (" << std::setprecision(3) << 100*relError << " %"
+        << (stress ? " of the rate" : "") << ", " << leading.nBlocks()
+        << " blocks of " << std::setprecision(4) << leading.blockStrain()
+        << " strain)";
     if (precise)
     {
         verdict << ": within the precision " << 100*precision_ << " %";
@@ -162,9 +185,9 @@ bool Foam::functionObjects::suspensionRheology::summarise(const bool report)
     else
     {
         verdict
-            << (etaR.reliable() ? ": above" : ": too few blocks to trust; for")
+            << (leading.reliable() ? ": above" : ": too few blocks to trust; for")
             << " the precision " << 100*precision_ << " % about "
-            << std::max(0.0, etaR.strainNeeded(precision_) - etaR.strainUsed())
+            << std::max(0.0, leading.strainNeeded(precision_) - leading.strainUsed())
             << " more steady strain is needed";
     }
 
