@@ -59,7 +59,8 @@ def joined_rheology(case):
                   key=lambda d: float(os.path.basename(d)))
     names, rows = None, []
     for d in dirs:
-        for path in sorted(glob.glob(os.path.join(d, "rheology*.dat"))):
+        for path in sorted(p for p in glob.glob(os.path.join(d, "rheology*.dat"))
+                           if not p.endswith("Summary.dat")):
             n, r = read_table(path)
             if not r:
                 continue
