@@ -323,6 +323,30 @@ expectExactRestart()
         >&2 || fail "$1: the restarted run's summary differs"
 }
 
+# Case $1 with Stokes drag alone (no lubrication, contact or
+# electro-chemical forces), overdamped; spheres may pass through each other
+dragOnlyCase()
+{
+    newCase "$1"
+    for model in lubrication contact electroChemical/repulsion \
+        electroChemical/attraction
+    do
+        setEntry "$1" $properties $model/active false
+    done
+    setEntry "$1" $properties integration/integrator overdamped
+    setEntry "$1" $properties integration/maxOverlap 3
+}
+
+# The volume fraction of the packed radii of case $1 (0/lagrangian d) in
+# its box
+packedFraction()
+{
+    listLines "$work/$1/0/lagrangian/suspension/d" \
+        | awk -v L="$(foamDictionary -entry box -value "$work/$1/0/uniform/suspensionState")" \
+            '{ v += 3.14159265358979*$1*$1*$1/6 }
+             END { gsub(/[()]/, "", L); split(L, b, " "); print v/(b[1]*b[2]*b[3]) }'
+}
+
 # The oscillatory shear rate of strain amplitude $2 and frequency $3 in
 # case $1
 setOscillation()
@@ -464,25 +488,15 @@ stressControlDilute)
     # Stokes drag alone, overdamped, under the shear stress 2: the rate is
     # sigma/(eta0 (1 + 2.5 phi)) in every row (the Stokes stresslets, eq.
     # 9a), phi that of the packed radii in the box
-    newCase c
-    for model in lubrication contact electroChemical/repulsion \
-        electroChemical/attraction
-    do
-        setEntry c $properties $model/active false
-    done
-    setEntry c $properties integration/integrator overdamped
+    dragOnlyCase c
     setEntry c $properties integration/deltaT 1e-4
-    setEntry c $properties integration/maxOverlap 3
     foamDictionary -entry ambientFlow/shearRate -remove "$work/c/$properties" \
         > /dev/null 2>&1
     foamDictionary -entry ambientFlow/shearStress -add 2 "$work/c/$properties" \
         > /dev/null 2>&1 || fail "cannot set shearStress"
     (cd "$work/c" && makeSuspension > log.makeSuspension 2>&1) || fail "makeSuspension"
     runCase c
-    phi=$(listLines "$work/c/0/lagrangian/suspension/d" \
-        | awk -v L="$(foamDictionary -entry box -value "$work/c/0/uniform/suspensionState")" \
-            '{ v += 3.14159265358979*$1*$1*$1/6 }
-             END { gsub(/[()]/, "", L); split(L, b, " "); print v/(b[1]*b[2]*b[3]) }')
+    phi=$(packedFraction c)
     dat="$work/c/postProcessing/rheology/0/rheology.dat"
     awk -v phi="$phi" -v r="$(column "$dat" shearRate)" '
         !/^#/ { n++; rate = $r; expected = 2/(1 + 2.5*phi)
@@ -521,14 +535,7 @@ oscillationDilute)
     # packed radii (lagrangian d) in the box; the step's mean rate is that
     # of a row, so G'/G'' = omega dt/2 = 0.0016. Rows start after the first
     # step: cycles 1 to 3 of [0, 4T] are sampled whole
-    newCase c
-    for model in lubrication contact electroChemical/repulsion \
-        electroChemical/attraction
-    do
-        setEntry c $properties $model/active false
-    done
-    setEntry c $properties integration/integrator overdamped
-    setEntry c $properties integration/maxOverlap 3    # spheres pass through
+    dragOnlyCase c
     setEntry c $properties ambientFlow/type uniformShear
     foamDictionary -entry ambientFlow/amplitude -remove "$work/c/$properties" \
         > /dev/null 2>&1
@@ -545,10 +552,7 @@ oscillationDilute)
         "$work/c/$control" > /dev/null 2>&1 || fail "cannot add the function object"
     (cd "$work/c" && makeSuspension > log.makeSuspension 2>&1) || fail "makeSuspension"
     runCase c
-    phi=$(listLines "$work/c/0/lagrangian/suspension/d" \
-        | awk -v L="$(foamDictionary -entry box -value "$work/c/0/uniform/suspensionState")" \
-            '{ v += 3.14159265358979*$1*$1*$1/6 }
-             END { gsub(/[()]/, "", L); split(L, b, " "); print v/(b[1]*b[2]*b[3]) }')
+    phi=$(packedFraction c)
     summary="$work/c/postProcessing/oscillation/0/oscillationSummary.dat"
     [ -f "$summary" ] || fail "no oscillationSummary.dat"
     awk -v phi="$phi" '
