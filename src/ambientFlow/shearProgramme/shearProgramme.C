@@ -28,6 +28,26 @@ bool isConstant(const Function1<scalar>& f)
         || isA<Function1Types::ZeroConstant<scalar>>(f);
 }
 
+//- The interval over which f's own integral is exact: everywhere for the
+//  oscillatory and polynomial types, a table's range, else none
+std::pair<scalar, scalar> exactRange(const Function1<scalar>& f)
+{
+    if
+    (
+        isA<Function1Types::oscillatoryShear>(f)
+     || isA<Function1Types::Polynomial<scalar>>(f)
+    )
+    {
+        return {-GREAT, GREAT};
+    }
+    if (const Function1Types::TableBase<scalar>* t = table(f))
+    {
+        const scalarField x(t->x());
+        return {min(x), max(x)};
+    }
+    return {GREAT, -GREAT};
+}
+
 } // End anonymous namespace
 
 
@@ -64,7 +84,8 @@ Foam::shearProgramme::shearProgramme
 )
 :
     rate_(readRate(dict, entryName)),
-    constant_(isConstant(*rate_))
+    constant_(isConstant(*rate_)),
+    exact_(exactRange(*rate_))
 {
     const scalar r0 = rate_->value(0);
     if (!std::isfinite(r0))
@@ -79,7 +100,8 @@ Foam::shearProgramme::shearProgramme
 Foam::shearProgramme::shearProgramme(const shearProgramme& p)
 :
     rate_(p.rate_->clone().ptr()),
-    constant_(p.constant_)
+    constant_(p.constant_),
+    exact_(p.exact_)
 {}
 
 
@@ -99,12 +121,7 @@ Foam::scalar Foam::shearProgramme::mean(const scalar t0, const scalar t1) const
         return f.value(t0);
     }
 
-    const Function1Types::TableBase<scalar>* t = table(f);
-    const bool exact =
-        isA<Function1Types::oscillatoryShear>(f)
-     || isA<Function1Types::Polynomial<scalar>>(f)
-     || (t && t0 >= Foam::min(t->x()()) && t1 <= Foam::max(t->x()()));
-    if (exact)
+    if (t0 >= exact_.first && t1 <= exact_.second)
     {
         return f.integrate(t0, t1)/(t1 - t0);
     }

@@ -397,8 +397,9 @@ std::string Simulation::takeStep(double dt)
             // The step's stress as stress control would find it, where the
             // resistance keeps what it needs (a rate that changes)
             ScopedTime timer(times_.hydrodynamics);
-            const ImplicitEuler::StressControl stress = stressControl(0);
             const bool keeps = implicit_->resistance().rateChanges();
+            const ImplicitEuler::StressControl stress =
+                keeps ? stressControl(0) : ImplicitEuler::StressControl{};
             if
             (
                 !implicit_->solve
