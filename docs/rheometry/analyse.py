@@ -11,6 +11,17 @@
                                            (their steady summaries);
                                            flowcurve.png of every
                                            flowcurve-*.csv here
+    analyse.py agreement <name> <tag>...   agreement-<name>.csv: rate against
+                                           stress control over independent
+                                           packings (flowcurve-<tag>.csv
+                                           here, one or more per seed):
+                                           each run's etaR, the pooled
+                                           (inverse-variance) mean of each
+                                           control and setting over the
+                                           seeds with their scatter against
+                                           the error bars, and each stress
+                                           setting against each rate in
+                                           combined error bars
     analyse.py reversal <caseDir> <tag> <window>
                                            reversal-<tag>.csv and
                                            reversal-<tag>.png from a case
@@ -136,6 +147,7 @@ def flowcurve(work, tag):
         names, table = joined_rheology(case)
         steps = table[-1][names.index("steps")] if table else 0
         strain = table[-1][names.index("strain")] if table else 0
+        overlap = max(r[names.index("maxOverlap")] for r in table) if table else 0
         rows.append({
             "tag": tag, "control": control, "setting": float(setting),
             "shearRate": rate[0], "shearRate_error": rate[1],
@@ -145,6 +157,7 @@ def flowcurve(work, tag):
             "contact_share": q["etaR_contact"][0]/eta[0] if "etaR_contact" in q else "",
             "trusted": "yes" if eta[2] and rate[2] else "no",
             "steady_strain": eta[3], "strain": round(strain, 3),
+            "max_overlap": round(overlap, 4),
             "steps": int(steps), "cpu_seconds": round(cpu, 1),
             "cpu_ms_per_step": round(1000*cpu/steps, 3) if steps else "",
             "wall_seconds": round(wall, 1), "peak_rss_MB": round(rss, 1)})
@@ -157,17 +170,74 @@ def flowcurve(work, tag):
     plot_flowcurve()
 
 
+def replica(tag):
+    """A tag <base>s<seed> of another packing of a set flowcurve-<base>.csv
+    holds (agreement, not a flow curve of its own)"""
+    m = re.fullmatch(r"(.+?)s\d+", tag)
+    return m is not None and os.path.exists(os.path.join(here, "flowcurve-%s.csv" % m.group(1)))
+
+
+def pooled(values):
+    """Inverse-variance mean and error of [(mean, error)]"""
+    w = [1/e**2 for _, e in values]
+    return sum(wi*m for wi, (m, _) in zip(w, values))/sum(w), 1/math.sqrt(sum(w))
+
+
+def agreement(name, tags):
+    rows = []
+    runs = {}           # (control, setting): [(etaR, error)], one per seed
+    for tag in tags:
+        for x in csv.DictReader(open(os.path.join(here, "flowcurve-%s.csv" % tag))):
+            key = (x["control"], float(x["setting"]))
+            runs.setdefault(key, []).append((float(x["etaR"]), float(x["etaR_error"])))
+            rows.append({"tag": tag, "control": x["control"], "setting": x["setting"],
+                         "shearRate": x["shearRate"], "etaR": x["etaR"],
+                         "etaR_error": x["etaR_error"], "note": ""})
+    pooledRuns = {}
+    for (control, setting), v in sorted(runs.items()):
+        m, e = pooled(v)
+        # chi^2 per degree of freedom of the seeds about their pooled mean:
+        # about 1 if the error bars hold across packings
+        chi2 = sum(((x - m)/ex)**2 for x, ex in v)/(len(v) - 1) if len(v) > 1 else float("nan")
+        pooledRuns[(control, setting)] = (m, e)
+        rows.append({"tag": "pooled", "control": control, "setting": setting,
+                     "shearRate": "", "etaR": round(m, 4), "etaR_error": round(e, 4),
+                     "note": "%d seeds, chi2/dof %.2f" % (len(v), chi2)})
+    for (cs, ss), (ms, es) in pooledRuns.items():
+        if cs != "stress":
+            continue
+        for (cr, sr), (mr, er) in pooledRuns.items():
+            if cr != "rate":
+                continue
+            d, ed = ms - mr, math.hypot(er, es)
+            rows.append({"tag": "stress %g - rate %g" % (ss, sr), "control": "",
+                         "setting": "", "shearRate": "", "etaR": round(d, 4),
+                         "etaR_error": round(ed, 4),
+                         "note": "%.2f combined error bars, %.1f %%" % (abs(d)/ed, 100*d/mr)})
+    out = os.path.join(here, "agreement-%s.csv" % name)
+    with open(out, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
+        w.writeheader()
+        w.writerows(rows)
+    for r in rows:
+        print(r)
+    print("wrote " + out)
+
+
 def plot_flowcurve():
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     fig, (a1, a2) = plt.subplots(1, 2, figsize=(10, 4.5))
-    for path, colour in zip(sorted(glob.glob(os.path.join(here, "flowcurve-*.csv"))),
-                            ("tab:blue", "tab:red", "tab:green", "tab:purple")):
+    paths = [p for p in sorted(glob.glob(os.path.join(here, "flowcurve-*.csv")))
+             if not replica(os.path.basename(p)[len("flowcurve-"):-len(".csv")])]
+    for path, colour in zip(paths, ("tab:blue", "tab:red", "tab:green", "tab:purple")):
         tag = os.path.basename(path)[len("flowcurve-"):-len(".csv")]
         rows = list(csv.DictReader(open(path)))
         for control, marker in (("rate", "o"), ("stress", "s")):
-            r = sorted((x for x in rows if x["control"] == control),
+            # a stress below which the suspension jammed (less than one
+            # strain unit in the run) has no steady flow to draw
+            r = sorted((x for x in rows if x["control"] == control and float(x["strain"]) >= 1),
                        key=lambda x: float(x["sigma"]))
             if not r:
                 continue
@@ -345,6 +415,8 @@ if __name__ == "__main__":
         amplitude(sys.argv[2], sys.argv[3])
     elif len(sys.argv) == 4 and sys.argv[1] == "flowcurve":
         flowcurve(sys.argv[2], sys.argv[3])
+    elif len(sys.argv) >= 4 and sys.argv[1] == "agreement":
+        agreement(sys.argv[2], sys.argv[3:])
     elif len(sys.argv) == 5 and sys.argv[1] == "reversal":
         reversal(sys.argv[2], sys.argv[3], float(sys.argv[4]))
     else:

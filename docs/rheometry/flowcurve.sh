@@ -6,13 +6,15 @@
 #
 #   docs/rheometry/flowcurve.sh [workDir]       (default: /tmp/flowcurve)
 #
-# TAG (FR) names the set; N (500), PHI (0.5); CRITICAL_LOAD (none: the
-# frictional contact of Table 1; a number F_CL: criticalLoadContact, friction
-# only above the load F_CL [eta0 a0^2 gammaDot], shear thickening); RATES
-# ("1") the rate-controlled runs, STRESSES ("") the stress-controlled ones
-# [eta0 gammaDot]; STRAIN (20) strain units each (a stress-controlled run
-# for STRAIN ETA/sigma time units, ETA (50) a guess of its etaR: run the
-# script again with a larger STRAIN or ETA to go on, from the last state).
+# TAG (FR) names the set; N (500), PHI (0.5), SEED (1: the packing's);
+# CRITICAL_LOAD (none: the frictional contact of Table 1; a number F_CL:
+# criticalLoadContact, friction only above the load F_CL [eta0 a0^2
+# gammaDot], shear thickening); STIFFNESS (the tutorial's k_hat = 4e5:
+# contact/stiffness); RATES ("1") the rate-controlled runs, STRESSES ("")
+# the stress-controlled ones [eta0 gammaDot]; STRAIN (20) strain units each
+# (a stress-controlled run for STRAIN ETA/sigma time units, ETA (50) a guess
+# of its etaR: run the script again with a larger STRAIN or ETA to go on,
+# from the last state).
 # Outer steps of 0.01 strain, one thread each, the cases one after the other
 # (a case whose log ends with End is not run again). Then
 # docs/rheometry/analyse.py flowcurve writes flowcurve-$TAG.csv (the steady
@@ -26,7 +28,9 @@ work=${1:-/tmp/flowcurve}
 tag=${TAG:-FR}
 N=${N:-500}
 phi=${PHI:-0.5}
+seed=${SEED:-1}
 fcl=${CRITICAL_LOAD:-}
+stiffness=${STIFFNESS:-}
 rates=${RATES:-1}
 stresses=${STRESSES:-}
 strain=${STRAIN:-20}
@@ -43,9 +47,13 @@ setUp()     # <case> <entry> <value>
     local p="$c/constant/suspensionProperties"
     foamDictionary -entry population/nParticles -set "$N" "$p" > /dev/null
     foamDictionary -entry population/volumeFraction -set "$phi" "$p" > /dev/null
+    foamDictionary -entry population/seed -set "$seed" "$p" > /dev/null
     if [ -n "$fcl" ]; then
         foamDictionary -entry contact/type -add criticalLoadContact "$p" > /dev/null
         foamDictionary -entry contact/criticalLoad -add "$fcl" "$p" > /dev/null
+    fi
+    if [ -n "$stiffness" ]; then
+        foamDictionary -entry contact/stiffness -set "$stiffness" "$p" > /dev/null
     fi
     foamDictionary -entry ambientFlow/shearRate -remove "$p" > /dev/null
     foamDictionary -entry "ambientFlow/$2" -add "$3" "$p" > /dev/null
