@@ -10,7 +10,11 @@
                                            <tag>-stress-<s> of flowcurve.sh
                                            (their steady summaries);
                                            flowcurve.png of every
-                                           flowcurve-*.csv here
+                                           flowcurve-*.csv here but the
+                                           other packings of a set
+                                           (<tag>s<seed>), without the
+                                           runs that sheared less than
+                                           one strain unit (jammed)
     analyse.py agreement <name> <tag>...   agreement-<name>.csv: rate against
                                            stress control over independent
                                            packings (flowcurve-<tag>.csv
@@ -179,6 +183,8 @@ def replica(tag):
 
 def pooled(values):
     """Inverse-variance mean and error of [(mean, error)]"""
+    if any(e <= 0 for _, e in values):
+        sys.exit("agreement: a run without an error bar (not steady): %s" % values)
     w = [1/e**2 for _, e in values]
     return sum(wi*m for wi, (m, _) in zip(w, values))/sum(w), 1/math.sqrt(sum(w))
 
@@ -235,8 +241,8 @@ def plot_flowcurve():
         tag = os.path.basename(path)[len("flowcurve-"):-len(".csv")]
         rows = list(csv.DictReader(open(path)))
         for control, marker in (("rate", "o"), ("stress", "s")):
-            # a stress below which the suspension jammed (less than one
-            # strain unit in the run) has no steady flow to draw
+            # a run in which the suspension jammed (less than one strain
+            # unit in all) has no steady flow to draw
             r = sorted((x for x in rows if x["control"] == control and float(x["strain"]) >= 1),
                        key=lambda x: float(x["sigma"]))
             if not r:

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <tuple>
 
 using namespace suspension;
@@ -488,8 +489,8 @@ TEST(StressControl, StepStressIsTheStressAfterTheStep)
     // new velocities at its old positions, the contact forces there), and
     // the bulk stress of the state after the step (what rate-controlled
     // rows report) differ only by the step's motion: in a dense frictional
-    // shear (Table 1 FR, St = 1e-3, the automatic step) by 1e-3 of the
-    // stress on average, over a strain in which contacts form and break
+    // shear with contacts (Table 1 FR, St = 1e-3, the automatic step) by
+    // about 1.4e-3 of the stress on average over half a strain unit
     const ForceModels models = test::lubricatedContacts(0.05, 4e5, 1.0);
     const RandomPacking::Result packed = test::packing(models, 1e-3);
     Simulation::Params pp = params(Integrator::implicitEuler);
@@ -514,7 +515,11 @@ TEST(StressControl, StepStressIsTheStressAfterTheStep)
         contacts += sim.summary().nContacts;
     }
     ASSERT_GT(contacts, 0u);
-
+    std::printf
+    (
+        "step against reported stress: mean %.3g, largest %.3g (relative)\n",
+        sumDiff/sumSigma, largest
+    );
     EXPECT_LT(sumDiff/sumSigma, 2e-3);
     EXPECT_LT(largest, 2e-2);
 }
