@@ -1456,14 +1456,24 @@ functionObjectEntries)
     [ "$(grep "^# Time" "$dat" | grep -o "etaR_" | wc -l)" -eq 2 ] \
         || fail "rheology.dat: other contributions"
     [ "$(rows "$dat" | wc -l)" -eq 2 ] || fail "rheology.dat: not 2 rows"
-    awk '!/^#/ && NF != 17 { exit 1 }' "$dat" \
-        || fail "rheology.dat: rows without 17 columns"
+    awk -v n="$(columns "$dat")" '!/^#/ && NF != n { exit 1 }' "$dat" \
+        || fail "rheology.dat: rows not of the header's columns"
     # The numbers of the full rows (reference/) of the steps written, in
-    # the columns chosen: Time..etaN, etaR_contact, etaR_stokes, the rest
+    # the columns this file has, found by name in the reference's header
     diff <(rows "$dat" | awk '{ $1 = $1; print }') \
-         <(rows "$(dirname "$0")/reference/postProcessing/rheology/0/rheology.dat" \
-            | awk 'NR % 2 == 0 { print $1, $2, $3, $4, $5, $6, $7, $8, $9,
-                   $12, $10, $15, $16, $17, $18, $19, $20 }') >&2 \
+         <(awk -v header="$(grep -m1 "^# Time" "$dat")" '
+             /^# Time/ {
+                 for (k = 2; k <= NF; ++k) col[$k] = k - 1
+                 m = split(header, want)
+                 for (j = 2; j <= m; ++j) if (!(want[j] in col)) exit 2
+                 next
+             }
+             /^#/ { next }
+             ++row % 2 == 0 {
+                 line = $col[want[2]]
+                 for (j = 3; j <= m; ++j) line = line " " $col[want[j]]
+                 print line
+             }' "$(dirname "$0")/reference/postProcessing/rheology/0/rheology.dat") >&2 \
         || fail "rheology.dat: not the numbers of the reference rows"
     [ ! -e "$work/c/postProcessing/profiles/0" ] \
         || fail "profiles written at the start (writeAtStart false)"
