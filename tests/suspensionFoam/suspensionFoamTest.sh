@@ -144,6 +144,24 @@ column()
     grep -m1 "^# Time" "$1" \
         | awk -v name="$2" '{ for (k = 2; k <= NF; ++k) if ($k == name) print k - 1 }'
 }
+# The rows of the .dat file $1 in the columns, by name, of the '# Time'
+# header of $2 (fails if $1 lacks one of them)
+selectedColumns()
+{
+    awk -v header="$(grep -m1 "^# Time" "$2")" '
+        /^# Time/ {
+            for (k = 2; k <= NF; ++k) col[$k] = k - 1
+            m = split(header, want)
+            for (j = 2; j <= m; ++j) if (!(want[j] in col)) exit 2
+            next
+        }
+        /^#/ { next }
+        {
+            line = $col[want[2]]
+            for (j = 3; j <= m; ++j) line = line " " $col[want[j]]
+            print line
+        }' "$1"
+}
 
 # Number of entries of an ascii IOField: the line before the first '(',
 # or N of a uniform list N{value}
@@ -1333,9 +1351,8 @@ overlappingStart|jammedStart)
         # The radii in use are the cloud's, not the population's 1 and 1.4
         grep -q "radii        2 radii: 1.03 (n = .*), 1.442 (n = .*) (of the stored cloud)" \
             "$work/c/log.wavyShearFoam" || fail "the log does not report the cloud's radii"
-        awk '/^# Time/ { for (i = 2; i <= NF; i++) col[$i] = i - 1; next }
-             !/^#/ && $col["maxOverlap"] > 0.01 { exit 1 }' \
-            "$work/c/postProcessing/rheology/0/rheology.dat" \
+        dat="$work/c/postProcessing/rheology/0/rheology.dat"
+        awk -v o="$(column "$dat" maxOverlap)" '!/^#/ && $o > 0.01 { exit 1 }' "$dat" \
             || fail "overlaps above 1% of the radius after the start"
     fi
     ;;
@@ -1461,19 +1478,8 @@ functionObjectEntries)
     # The numbers of the full rows (reference/) of the steps written, in
     # the columns this file has, found by name in the reference's header
     diff <(rows "$dat" | awk '{ $1 = $1; print }') \
-         <(awk -v header="$(grep -m1 "^# Time" "$dat")" '
-             /^# Time/ {
-                 for (k = 2; k <= NF; ++k) col[$k] = k - 1
-                 m = split(header, want)
-                 for (j = 2; j <= m; ++j) if (!(want[j] in col)) exit 2
-                 next
-             }
-             /^#/ { next }
-             ++row % 2 == 0 {
-                 line = $col[want[2]]
-                 for (j = 3; j <= m; ++j) line = line " " $col[want[j]]
-                 print line
-             }' "$(dirname "$0")/reference/postProcessing/rheology/0/rheology.dat") >&2 \
+         <(selectedColumns "$(dirname "$0")/reference/postProcessing/rheology/0/rheology.dat" "$dat" \
+            | awk 'NR % 2 == 0') >&2 \
         || fail "rheology.dat: not the numbers of the reference rows"
     [ ! -e "$work/c/postProcessing/profiles/0" ] \
         || fail "profiles written at the start (writeAtStart false)"
