@@ -38,9 +38,16 @@ namespace
 
         void apply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const { y = A*x; }
 
-        void precondition(const Eigen::VectorXd& r, Eigen::VectorXd& z) const
+        void precondition
+        (
+            const Eigen::VectorXd& r,
+            Eigen::VectorXd& z,
+            Eigen::Index start,
+            Eigen::Index n
+        ) const
         {
-            z = r.cwiseQuotient(A.diagonal());
+            z.segment(start, n) =
+                r.segment(start, n).cwiseQuotient(A.diagonal().segment(start, n));
         }
 
         //- The A-norm of the error of x
@@ -152,7 +159,16 @@ namespace
 
         void apply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const { y = d.cwiseProduct(x); }
 
-        void precondition(const Eigen::VectorXd& r, Eigen::VectorXd& z) const { z = r; }
+        void precondition
+        (
+            const Eigen::VectorXd& r,
+            Eigen::VectorXd& z,
+            Eigen::Index start,
+            Eigen::Index n
+        ) const
+        {
+            z.segment(start, n) = r.segment(start, n);
+        }
     };
 }
 

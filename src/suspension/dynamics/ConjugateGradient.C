@@ -9,34 +9,6 @@
 namespace suspension
 {
 
-namespace
-{
-    //- Entries per block of the ordered reductions (6 per particle,
-    //  core/Parallel.H); vectors of fewer than parallelMinParticles()
-    //  particles are done on one thread
-    constexpr Eigen::Index blockSize = 6*reductionBlock;
-
-    Eigen::Index nBlocks(Eigen::Index n)
-    {
-        return (n + blockSize - 1)/blockSize;
-    }
-
-    //- f(start, length) for every block, in parallel
-    template<class F>
-    void forBlocks(Eigen::Index n, F f)
-    {
-        const Eigen::Index nb = nBlocks(n);
-        const bool parallel = threaded(std::size_t(n/6)) && nb > 1;
-        #pragma omp parallel for schedule(static) if(parallel)
-        for (Eigen::Index k = 0; k < nb; ++k)
-        {
-            const Eigen::Index start = k*blockSize;
-            f(start, std::min(blockSize, n - start));
-        }
-    }
-}
-
-
 ConjugateGradient::ConjugateGradient(const Params& params)
 :
     params_(params)
@@ -56,6 +28,18 @@ ConjugateGradient::ConjugateGradient(const Params& params)
 double ConjugateGradient::dot(const Vector& a, const Vector& b)
 {
     std::vector<double> partial(nBlocks(a.size()));
+    return dot(a, b, partial);
+}
+
+
+double ConjugateGradient::dot
+(
+    const Vector& a,
+    const Vector& b,
+    std::vector<double>& partial
+)
+{
+    partial.resize(nBlocks(a.size()));
     forBlocks(a.size(), [&](Eigen::Index start, Eigen::Index n)
     {
         partial[start/blockSize] = a.segment(start, n).dot(b.segment(start, n));
@@ -66,31 +50,6 @@ double ConjugateGradient::dot(const Vector& a, const Vector& b)
         sum += s;
     }
     return sum;
-}
-
-
-void ConjugateGradient::residualDots
-(
-    const Vector& r,
-    const Vector& z,
-    double& rz,
-    double& rr
-)
-{
-    std::vector<double> partial(2*nBlocks(r.size()));
-    forBlocks(r.size(), [&](Eigen::Index start, Eigen::Index n)
-    {
-        const Eigen::Index k = 2*(start/blockSize);
-        partial[k] = r.segment(start, n).dot(z.segment(start, n));
-        partial[k + 1] = r.segment(start, n).squaredNorm();
-    });
-    rz = 0;
-    rr = 0;
-    for (std::size_t k = 0; k < partial.size(); k += 2)
-    {
-        rz += partial[k];
-        rr += partial[k + 1];
-    }
 }
 
 

@@ -5,6 +5,7 @@
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -34,45 +35,45 @@ namespace
         return D;
     }
 
-    //- The pair's rows of i (yi) and of j (yj) of R_Lub applied to (xi, xj)
-    inline void pairProduct
+    //- The coupling of a lubricated pair on one of its spheres: the terms
+    //  of R_Lub on it due to the motion xp of its partner, with the
+    //  pair's off-diagonal scalars (Lubrication.H layout): the force
+    //  X^A (n.u_p) n + Y^A u_p,T + Bf n x omega_p, the torque
+    //  -Bt n x u_p + Y^C omega_p,T, where (Bf, Bt) = (Y^B_ji, Y^B_ij) on
+    //  the first sphere and (Y^B_ij, Y^B_ji) on the second
+    inline Vec6 coupling
     (
-        const HydrodynamicResistance::Pair& c,
-        const Vec6& xi,
-        const Vec6& xj,
-        Vec6& yi,
-        Vec6& yj
+        const Vec3& n,
+        double XA,
+        double YA,
+        double Bf,
+        double Bt,
+        double YC,
+        const Vec6& xp
     )
     {
-        const Vec3& n = c.n;
-        const Vec3 ui = xi.head<3>();
-        const Vec3 wi = xi.tail<3>();
-        const Vec3 uj = xj.head<3>();
-        const Vec3 wj = xj.tail<3>();
+        const Vec3 u = xp.head<3>();
+        const Vec3 w = xp.tail<3>();
+        const double nu = n.dot(u);
+        Vec6 y;
+        y.head<3>() = (XA - YA)*nu*n + YA*u + Bf*n.cross(w);
+        y.tail<3>() = -Bt*n.cross(u) + YC*(w - n.dot(w)*n);
+        return y;
+    }
 
-        // Normal and tangential parts, n x v
-        const double nui = n.dot(ui);
-        const double nuj = n.dot(uj);
-        const Vec3 uiT = ui - nui*n;
-        const Vec3 ujT = uj - nuj*n;
-        const Vec3 wiT = wi - n.dot(wi)*n;
-        const Vec3 wjT = wj - n.dot(wj)*n;
-        const Vec3 nxui = n.cross(ui);
-        const Vec3 nxuj = n.cross(uj);
-        const Vec3 nxwi = n.cross(wi);
-        const Vec3 nxwj = n.cross(wj);
-
-        // Rows of R_Lub (Lubrication.H): forces on i, j, then torques on i, j
-        yi.head<3>() =
-            (c.XA.ii*nui + c.XA.ij*nuj)*n + c.YA.ii*uiT + c.YA.ij*ujT
-          + c.YB.ii*nxwi + c.YB.ji*nxwj;
-        yj.head<3>() =
-            (c.XA.ji*nui + c.XA.jj*nuj)*n + c.YA.ji*uiT + c.YA.jj*ujT
-          + c.YB.ij*nxwi + c.YB.jj*nxwj;
-        yi.tail<3>() =
-           -c.YB.ii*nxui - c.YB.ij*nxuj + c.YC.ii*wiT + c.YC.ij*wjT;
-        yj.tail<3>() =
-           -c.YB.ji*nxui - c.YB.jj*nxuj + c.YC.ji*wiT + c.YC.jj*wjT;
+    //- The row of the first sphere of a lubricated pair (its own motion xi,
+    //  the partner's xj, its self entries ii = X^A, Y^A, Y^B, Y^C): the
+    //  self terms have the form of a coupling with Bf = Bt = Y^B_ii
+    inline Vec6 firstRow
+    (
+        const HydrodynamicResistance::Pair& c,
+        const double (&ii)[4],
+        const Vec6& xi,
+        const Vec6& xj
+    )
+    {
+        return coupling(c.n, ii[0], ii[1], ii[2], ii[2], ii[3], xi)
+            + coupling(c.n, c.XA, c.YA, c.YBji, c.YBij, c.YC, xj);
     }
 
     //- The modes of a pair in contact (header): u_n, u_t, u_r of its
@@ -225,21 +226,11 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
     const std::size_t nB = reductionBlocks(N);
     const double gap = lubrication_ ? lubrication_->gap() : -1;
 
-    // Minimum-image r of a slot, and whether it is in lubrication range
-    auto separation = [&](std::size_t i, std::size_t j)
-    {
-        Vec3 r = p.x[j] - p.x[i];
-        box.minimumImage(r);
-        return r;
-    };
-    auto lubricated = [&](std::size_t i, std::size_t j, const Vec3& r)
-    {
-        const double R = p.a[i] + p.a[j] + gap;
-        return gap >= 0 && r.squaredNorm() < R*R;
-    };
-
-    // The index of the pairs in lubrication range
-    index_.offset.assign(N + 1, 0);
+    // The minimum-image r of each slot of the list, computed once: NaN
+    // for a slot out of lubrication range; the count of each first
+    // particle
+    separation_.resize(pairs.nPairs());
+    first_.assign(N + 1, 0);
     #pragma omp parallel for schedule(static) if(threaded(N))
     for (std::size_t i = 0; i < N; ++i)
     {
@@ -247,18 +238,24 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
         for (std::uint32_t k = pairs.offset[i]; k < pairs.offset[i + 1]; ++k)
         {
             const std::uint32_t j = pairs.j[k];
-            count += lubricated(i, j, separation(i, j));
+            Vec3 r = p.x[j] - p.x[i];
+            box.minimumImage(r);
+            const double R = p.a[i] + p.a[j] + gap;
+            const bool in = gap >= 0 && r.squaredNorm() < R*R;
+            separation_[k] = in ? r : Vec3::Constant(std::nan(""));
+            count += in;
         }
-        index_.offset[i + 1] = count;
+        first_[i + 1] = count;
     }
     for (std::size_t i = 0; i < N; ++i)
     {
-        index_.offset[i + 1] += index_.offset[i];
+        first_[i + 1] += first_[i];
     }
-    const std::size_t nPairs = index_.offset[N];
-    index_.j.resize(nPairs);
+    const std::size_t nPairs = first_[N];
+    partner_.resize(nPairs);
     pairs_.resize(nPairs);
-    pairRows_.resize(nPairs);
+    secondRows_.resize(nPairs);
+    selfR_.resize(N);
     ambientForces_.resize(6*N);
     shearRows_.resize(rateChanges_ ? nPairs : 0);
     shearForces_.setZero(rateChanges_ ? 6*N : 0);
@@ -269,8 +266,8 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
     unit.gradU(1, 0) = 1;
     const Mat3 unitShear = unit.E();
 
-    // Pass 1: Stokes drag, pair coefficients and the rows of i of each
-    // pair; the rows of j wait in pairRows_. Stresslets per block.
+    // Pass 1, over the first particles: Stokes drag, pair coefficients,
+    // the terms of i; those of j wait in secondRows_. Stresslets per block.
     std::vector<Mat3> stokesS(nB, Mat3::Zero());
     std::vector<Mat3> stokesUnitS(nB, Mat3::Zero());
     std::vector<Mat3> lubricationS(nB, Mat3::Zero());
@@ -292,22 +289,24 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
             {
                 stokesUnitS[blk] += drag_.eval(a, unit.U, unit.Omega(), unit).S;
             }
+            Block R = Block::Zero();
 
             const Vec6 vi = relativeVelocity(p, fi, i);
-            std::uint32_t s = index_.offset[i];
+            std::uint32_t s = first_[i];
             for (std::uint32_t k = pairs.offset[i]; k < pairs.offset[i + 1]; ++k)
             {
-                const std::uint32_t j = pairs.j[k];
-                const Vec3 r = separation(i, j);
-                if (!lubricated(i, j, r))
+                const Vec3& r = separation_[k];
+                if (std::isnan(r.x()))
                 {
                     continue;
                 }
-                const PairGeometry g = PairGeometry::make(r, p.a[i], p.a[j]);
+                const std::uint32_t j = pairs.j[k];
+                const PairGeometry g = PairGeometry::make(r, a, p.a[j]);
                 const LubricationCoefficients c = lubrication_->coefficients(g);
-                index_.j[s] = j;
+                partner_[s] = j;
                 Pair& q = pairs_[s];
-                q = Pair{g.n, c.XA, c.YA, c.YB, c.YC};
+                q = Pair{g.n, c.XA.ij, c.YA.ij, c.YB.ij, c.YB.ji, c.YC.ij};
+                R += selfBlock(g.n, c.XA.ii, c.YA.ii, c.YB.ii, c.YC.ii);
 
                 // (A.3): F^E, T^E of i now, of j in pass 2
                 const Lubrication::PairVector fE = Lubrication::strainForces
@@ -316,7 +315,13 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
                 );
                 b.head<3>() += fE.segment<3>(0);
                 b.tail<3>() += fE.segment<3>(6);
-                pairRows_[s] << fE.segment<3>(3), fE.segment<3>(9);
+                SecondRow& second = secondRows_[s];
+                second.fE << fE.segment<3>(3), fE.segment<3>(9);
+                second.jj[0] = c.XA.jj;
+                second.jj[1] = c.YA.jj;
+                second.jj[2] = c.YB.jj;
+                second.jj[3] = c.YC.jj;
+                const double ii[4] = {c.XA.ii, c.YA.ii, c.YB.ii, c.YC.ii};
                 if (rateChanges_)
                 {
                     const Lubrication::PairVector fS = Lubrication::strainForces
@@ -326,43 +331,50 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
                     shearForces_.segment<3>(6*i) += fS.segment<3>(0);
                     shearForces_.segment<3>(6*i + 3) += fS.segment<3>(6);
                     shearRows_[s] << fS.segment<3>(3), fS.segment<3>(9);
-                    pairStress_[s] = {g.r, fE.segment<3>(0), fS.segment<3>(0)};
+                    pairStress_[s] =
+                        {g.r, fE.segment<3>(0), fS.segment<3>(0), {ii[0], ii[1], ii[2], ii[3]}};
                 }
 
                 // Stresslet (9b) of the force on i at the current velocities
-                Vec6 yi, yj;
-                pairProduct(q, vi, relativeVelocity(p, ambient[j], j), yi, yj);
+                const Vec6 yi = firstRow(q, ii, vi, relativeVelocity(p, ambient[j], j));
                 lubricationS[blk] += symm(outer(g.r, fE.segment<3>(0) - yi.head<3>()));
                 ++s;
             }
             ambientForces_.segment<6>(6*i) = b;
+            selfR_[i] = R;
         }
     }
-    index_.transpose();
+    rows_.build(first_, partner_);
 
-    // Pass 2: the rows of j, F^E, T^E, in pair order
+    // Pass 2, over the second particles: their self blocks, F^E, T^E (and
+    // F_s), in pair order
     #pragma omp parallel for schedule(static) if(threaded(N))
     for (std::size_t j = 0; j < N; ++j)
     {
-        for (std::uint32_t k = index_.offsetT[j]; k < index_.offsetT[j + 1]; ++k)
+        Block& R = selfR_[j];
+        for (std::uint32_t e = rows_.offset[j]; e < rows_.offset[j + 1]; ++e)
         {
-            ambientForces_.segment<6>(6*j) += pairRows_[index_.slotT[k]];
-        }
-        if (rateChanges_)
-        {
-            for (std::uint32_t k = index_.offsetT[j]; k < index_.offsetT[j + 1]; ++k)
+            if (!PairRows::second(rows_.slot[e]))
             {
-                shearForces_.segment<6>(6*j) += shearRows_[index_.slotT[k]];
+                continue;
+            }
+            const std::uint32_t s = PairRows::slotOf(rows_.slot[e]);
+            const SecondRow& second = secondRows_[s];
+            R += selfBlock(pairs_[s].n, second.jj[0], second.jj[1], second.jj[2], second.jj[3]);
+            ambientForces_.segment<6>(6*j) += second.fE;
+            if (rateChanges_)
+            {
+                shearForces_.segment<6>(6*j) += shearRows_[s];
             }
         }
     }
 
     // The contacts with a spring in the operator (all, or with the normal
     // springs explicit those with a sticking tangential or rolling one)
-    // and their index
+    // and their rows
     contacts_.clear();
-    contactIndex_.offset.assign(N + 1, 0);
-    contactIndex_.j.clear();
+    first_.assign(N + 1, 0);
+    partner_.clear();
     for (const LinearisedContact& c : contacts)
     {
         ContactStiffness k = c.k;
@@ -379,15 +391,14 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
         ({
             c.n, c.ai, c.aj, 2*c.ai*c.aj/(c.ai + c.aj), c.dUinf, c.dy, k, 0, 0, 0
         });
-        contactIndex_.j.push_back(c.j);
-        ++contactIndex_.offset[c.i + 1];
+        partner_.push_back(c.j);
+        ++first_[c.i + 1];
     }
-    contactRows_.resize(contacts_.size());
     for (std::size_t i = 0; i < N; ++i)
     {
-        contactIndex_.offset[i + 1] += contactIndex_.offset[i];
+        first_[i + 1] += first_[i];
     }
-    contactIndex_.transpose();
+    contactRows_.build(first_, partner_);
 
     Stresslets S{Mat3::Zero(), Mat3::Zero()};
     stokesShear_.setZero();
@@ -416,7 +427,7 @@ Mat3 HydrodynamicResistance::lubricationStresslet
             " the data of a resistance constructed with shearForces"
         );
     }
-    const std::size_t N = index_.nParticles();
+    const std::size_t N = rows_.nParticles();
     const std::size_t nB = reductionBlocks(N);
     std::vector<Mat3> S(nB, Mat3::Zero());
     #pragma omp parallel for schedule(static) if(threaded(N))
@@ -426,11 +437,15 @@ Mat3 HydrodynamicResistance::lubricationStresslet
         for (std::size_t i = blk*reductionBlock; i < end; ++i)
         {
             const Vec6 vi = v.segment<6>(6*i);
-            for (std::uint32_t s = index_.offset[i]; s < index_.offset[i + 1]; ++s)
+            for (std::uint32_t e = rows_.offset[i]; e < rows_.offset[i + 1]; ++e)
             {
+                if (PairRows::second(rows_.slot[e]))
+                {
+                    continue;
+                }
+                const std::uint32_t s = rows_.slot[e];
                 const PairStress& q = pairStress_[s];
-                Vec6 yi, yj;
-                pairProduct(pairs_[s], vi, v.segment<6>(6*index_.j[s]), yi, yj);
+                const Vec6 yi = firstRow(pairs_[s], q.ii, vi, v.segment<6>(6*rows_.partner[e]));
                 S[blk] += symm(outer(q.r, a*q.fE + b*q.fS - yi.head<3>()));
             }
         }
@@ -452,46 +467,28 @@ HydrodynamicResistance::Block HydrodynamicResistance::diagonalBlock
     double invDt
 ) const
 {
-    const double eta = drag_.params().eta;
-    const double a = p.a[i];
-    const double m = invDt*p.m[i];
-    const double I = invDt*p.I[i];
-
-    // R: the Stokes drag (A.1) and the self blocks of R_Lub
-    Block R = Block::Zero();
-    R.diagonal() << Vec3::Constant(6*pi*eta*a), Vec3::Constant(8*pi*eta*a*a*a);
-    for (std::uint32_t s = index_.offset[i]; s < index_.offset[i + 1]; ++s)
-    {
-        const Pair& q = pairs_[s];
-        R += selfBlock(q.n, q.XA.ii, q.YA.ii, q.YB.ii, q.YC.ii);
-    }
-    for (std::uint32_t k = index_.offsetT[i]; k < index_.offsetT[i + 1]; ++k)
-    {
-        const Pair& q = pairs_[index_.slotT[k]];
-        R += selfBlock(q.n, q.XA.jj, q.YA.jj, q.YB.jj, q.YC.jj);
-    }
-
     // K and Gamma: the springs and dashpots of its contacts
     Block K = Block::Zero();
     Block G = Block::Zero();
-    auto add = [&](const Contact& c, double side, double radius)
+    for (std::uint32_t e = contactRows_.offset[i]; e < contactRows_.offset[i + 1]; ++e)
     {
+        const bool second = PairRows::second(contactRows_.slot[e]);
+        const Contact& c = contacts_[PairRows::slotOf(contactRows_.slot[e])];
         const ContactStiffness& k = c.k;
-        K += contactSelfBlock(c.n, side, radius, c.aij, k.kn, k.kt, k.kr);
+        K += contactSelfBlock
+        (
+            c.n, second ? 1 : -1, second ? c.aj : c.ai, c.aij, k.kn, k.kt, k.kr
+        );
         G.topLeftCorner<3, 3>() += k.gammaN*outer(c.n, c.n);
-    };
-    for (std::uint32_t s = contactIndex_.offset[i]; s < contactIndex_.offset[i + 1]; ++s)
-    {
-        add(contacts_[s], -1, contacts_[s].ai);
-    }
-    for (std::uint32_t t = contactIndex_.offsetT[i]; t < contactIndex_.offsetT[i + 1]; ++t)
-    {
-        const Contact& c = contacts_[contactIndex_.slotT[t]];
-        add(c, 1, c.aj);
     }
 
-    Block A = R + dt*K + G;
-    A.diagonal() += (Vec6() << Vec3::Constant(m), Vec3::Constant(I)).finished();
+    // R: the Stokes drag (A.1) and the self blocks of R_Lub; M/dt
+    const double eta = drag_.params().eta;
+    const double a = p.a[i];
+    Block A = selfR_[i] + dt*K + G;
+    A.diagonal() +=
+        (Vec6() << Vec3::Constant(6*pi*eta*a + invDt*p.m[i]),
+                   Vec3::Constant(8*pi*eta*a*a*a + invDt*p.I[i])).finished();
     return A;
 }
 
@@ -505,12 +502,8 @@ std::string HydrodynamicResistance::blockFailure
 ) const
 {
     const Block A = diagonalBlock(p, i, dt, invDt);
-    const std::size_t nPairs =
-        index_.offset[i + 1] - index_.offset[i]
-      + index_.offsetT[i + 1] - index_.offsetT[i];
-    const std::size_t nContacts =
-        contactIndex_.offset[i + 1] - contactIndex_.offset[i]
-      + contactIndex_.offsetT[i + 1] - contactIndex_.offsetT[i];
+    const std::size_t nPairs = rows_.offset[i + 1] - rows_.offset[i];
+    const std::size_t nContacts = contactRows_.offset[i + 1] - contactRows_.offset[i];
 
     std::ostringstream msg;
     msg << "the diagonal block of the implicit velocity operator of particle "
@@ -547,9 +540,15 @@ void HydrodynamicResistance::setStep(const Particles& p, double dt, bool inertia
     const std::size_t N = p.size();
     const double eta = drag_.params().eta;
     const double invDt = inertia ? 1/dt : 0;
-    translation_.resize(N);
-    rotation_.resize(N);
+    diagonal_.resize(N);
     inverseA_.resize(N);
+
+    for (Contact& c : contacts_)
+    {
+        c.cn = dt*c.k.kn + c.k.gammaN;
+        c.ct = dt*c.k.kt;
+        c.cr = dt*c.k.kr;
+    }
 
     // The diagonal block of A of each particle, inverted; the first whose
     // factorisation fails or whose inverse is not finite
@@ -558,11 +557,15 @@ void HydrodynamicResistance::setStep(const Particles& p, double dt, bool inertia
     for (std::size_t i = 0; i < N; ++i)
     {
         const double a = p.a[i];
-        translation_[i] = 6*pi*eta*a + invDt*p.m[i];
-        rotation_[i] = 8*pi*eta*a*a*a + invDt*p.I[i];
+        diagonal_[i] = {6*pi*eta*a + invDt*p.m[i], 8*pi*eta*a*a*a + invDt*p.I[i]};
         const Eigen::LLT<Block> llt(diagonalBlock(p, i, dt, invDt));
-        inverseA_[i] = llt.solve(Block::Identity());
-        if (llt.info() != Eigen::Success || !inverseA_[i].allFinite())
+        const Block inverse = llt.solve(Block::Identity());
+        inverseA_[i] = inverse.cast<float>();
+        if
+        (
+            llt.info() != Eigen::Success || !inverse.allFinite()
+         || !inverseA_[i].allFinite()
+        )
         {
             failed = std::min(failed, i);
         }
@@ -570,13 +573,6 @@ void HydrodynamicResistance::setStep(const Particles& p, double dt, bool inertia
     if (failed < N)
     {
         throw SimulationError(blockFailure(p, failed, dt, invDt));
-    }
-
-    for (Contact& c : contacts_)
-    {
-        c.cn = dt*c.k.kn + c.k.gammaN;
-        c.ct = dt*c.k.kt;
-        c.cr = dt*c.k.kr;
     }
 }
 
@@ -592,116 +588,103 @@ void HydrodynamicResistance::contactRightHandSide
 {
     const std::size_t N = ambient.size();
 
-    #pragma omp parallel if(threaded(N))
+    // Each particle adds the terms of its contacts, in row order
+    #pragma omp parallel for schedule(static) if(threaded(N))
+    for (std::size_t i = 0; i < N; ++i)
     {
-        // Pass 1: rows of i; rows of j into contactRows_
-        #pragma omp for schedule(static)
-        for (std::size_t i = 0; i < N; ++i)
+        Vec6 bi = Vec6::Zero();
+        for (std::uint32_t e = contactRows_.offset[i]; e < contactRows_.offset[i + 1]; ++e)
         {
-            const Vec6 vi = v.segment<6>(6*i);
-            Vec6 Vi;
-            Vi << Vec3::Zero(), ambient[i].Omega();
-            Vec6 bi = Vec6::Zero();
-            for (std::uint32_t s = contactIndex_.offset[i]; s < contactIndex_.offset[i + 1]; ++s)
+            const bool second = PairRows::second(contactRows_.slot[e]);
+            const Contact& c = contacts_[PairRows::slotOf(contactRows_.slot[e])];
+            const std::size_t first = second ? contactRows_.partner[e] : i;
+            const std::size_t other = second ? i : contactRows_.partner[e];
+            Vec6 V1, V2;
+            V1 << Vec3::Zero(), ambient[first].Omega();
+            V2 << c.dUinf + shift*c.dy*Vec3::UnitX(), ambient[other].Omega();
+            const Modes ambientModes = contactModes(c, V1, V2);
+            const Modes start = contactModes
+            (
+                c, v.segment<6>(6*first), v.segment<6>(6*other)
+            );
+            const Modes m
             {
-                const Contact& c = contacts_[s];
-                const std::uint32_t j = contactIndex_.j[s];
-                Vec6 Vj;
-                Vj << c.dUinf + shift*c.dy*Vec3::UnitX(), ambient[j].Omega();
-                const Modes ambientModes = contactModes(c, Vi, Vj);
-                const Modes start = contactModes(c, vi, v.segment<6>(6*j));
-                const Modes m
-                {
-                    c.k.gammaN*start.n - dt*c.k.kn*ambientModes.n,
-                    -dt*c.k.kt*ambientModes.t,
-                    -dt*c.k.kr*ambientModes.r
-                };
-                Vec6 rowsI;
-                contactTranspose(c, m, rowsI, contactRows_[s]);
-                bi += rowsI;
-            }
-            b.segment<6>(6*i) += bi;
+                c.k.gammaN*start.n - dt*c.k.kn*ambientModes.n,
+                -dt*c.k.kt*ambientModes.t,
+                -dt*c.k.kr*ambientModes.r
+            };
+            Vec6 rows1, rows2;
+            contactTranspose(c, m, rows1, rows2);
+            bi += second ? rows2 : rows1;
         }
-
-        // Pass 2: rows of j, in pair order
-        #pragma omp for schedule(static)
-        for (std::size_t j = 0; j < N; ++j)
-        {
-            Vec6 bj = Vec6::Zero();
-            for (std::uint32_t t = contactIndex_.offsetT[j]; t < contactIndex_.offsetT[j + 1]; ++t)
-            {
-                bj += contactRows_[contactIndex_.slotT[t]];
-            }
-            b.segment<6>(6*j) += bj;
-        }
+        b.segment<6>(6*i) += bi;
     }
 }
 
 
 void HydrodynamicResistance::apply(const Vector& x, Vector& y) const
 {
-    const std::size_t N = translation_.size();
+    const std::size_t N = inverseA_.size();
     y.resize(6*N);
 
-    #pragma omp parallel if(threaded(N))
+    // Each particle reads its own row: the drag and M/dt, its self block
+    // of R_Lub, the couplings of its lubricated pairs, then its contacts
+    #pragma omp parallel for schedule(static) if(threaded(N))
+    for (std::size_t i = 0; i < N; ++i)
     {
-        // Pass 1: diagonal, rows of i; rows of j into pairRows_
-        #pragma omp for schedule(static)
-        for (std::size_t i = 0; i < N; ++i)
+        const Vec6 xi = x.segment<6>(6*i);
+        Vec6 yi = selfR_[i]*xi;
+        yi.head<3>() += diagonal_[i][0]*xi.head<3>();
+        yi.tail<3>() += diagonal_[i][1]*xi.tail<3>();
+        for (std::uint32_t e = rows_.offset[i]; e < rows_.offset[i + 1]; ++e)
         {
-            const Vec6 xi = x.segment<6>(6*i);
-            Vec6 yi;
-            yi << translation_[i]*xi.head<3>(), rotation_[i]*xi.tail<3>();
-            for (std::uint32_t s = index_.offset[i]; s < index_.offset[i + 1]; ++s)
-            {
-                Vec6 rowsI;
-                pairProduct
-                (
-                    pairs_[s], xi, x.segment<6>(6*index_.j[s]), rowsI, pairRows_[s]
-                );
-                yi += rowsI;
-            }
-            for (std::uint32_t s = contactIndex_.offset[i]; s < contactIndex_.offset[i + 1]; ++s)
-            {
-                const Contact& c = contacts_[s];
-                Vec6 rowsI;
-                contactProduct
-                (
-                    c, xi, x.segment<6>(6*contactIndex_.j[s]), rowsI, contactRows_[s]
-                );
-                yi += rowsI;
-            }
-            y.segment<6>(6*i) = yi;
+            const std::uint32_t code = rows_.slot[e];
+            const Pair& c = pairs_[PairRows::slotOf(code)];
+            const Vec6 xj = x.segment<6>(6*rows_.partner[e]);
+            yi += PairRows::second(code)
+              ? coupling(c.n, c.XA, c.YA, c.YBij, c.YBji, c.YC, xj)
+              : coupling(c.n, c.XA, c.YA, c.YBji, c.YBij, c.YC, xj);
         }
-
-        // Pass 2: rows of j, in pair order
-        #pragma omp for schedule(static)
-        for (std::size_t j = 0; j < N; ++j)
+        for (std::uint32_t e = contactRows_.offset[i]; e < contactRows_.offset[i + 1]; ++e)
         {
-            Vec6 yj = Vec6::Zero();
-            for (std::uint32_t k = index_.offsetT[j]; k < index_.offsetT[j + 1]; ++k)
+            const bool second = PairRows::second(contactRows_.slot[e]);
+            const Contact& c = contacts_[PairRows::slotOf(contactRows_.slot[e])];
+            const Vec6 xj = x.segment<6>(6*contactRows_.partner[e]);
+            Vec6 rows1, rows2;
+            if (second)
             {
-                yj += pairRows_[index_.slotT[k]];
+                contactProduct(c, xj, xi, rows1, rows2);
+                yi += rows2;
             }
-            for (std::uint32_t k = contactIndex_.offsetT[j]; k < contactIndex_.offsetT[j + 1]; ++k)
+            else
             {
-                yj += contactRows_[contactIndex_.slotT[k]];
+                contactProduct(c, xi, xj, rows1, rows2);
+                yi += rows1;
             }
-            y.segment<6>(6*j) += yj;
         }
+        y.segment<6>(6*i) = yi;
     }
 }
 
 
 void HydrodynamicResistance::precondition(const Vector& r, Vector& z) const
 {
-    const std::size_t N = inverseA_.size();
-    z.resize(6*N);
+    z.resize(r.size());
+    precondition(r, z, 0, r.size());
+}
 
-    #pragma omp parallel for schedule(static) if(threaded(N))
-    for (std::size_t i = 0; i < N; ++i)
+
+void HydrodynamicResistance::precondition
+(
+    const Vector& r,
+    Vector& z,
+    Eigen::Index start,
+    Eigen::Index length
+) const
+{
+    for (Eigen::Index i = start/6; i < (start + length)/6; ++i)
     {
-        z.segment<6>(6*i) = inverseA_[i]*r.segment<6>(6*i);
+        z.segment<6>(6*i) = inverseA_[i].cast<double>()*r.segment<6>(6*i);
     }
 }
 

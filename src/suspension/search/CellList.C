@@ -10,6 +10,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace suspension
 {
@@ -47,6 +48,25 @@ namespace
         {0, -1, -1, 1}, {0, 0, -1, 1}, {0, 1, -1, 1},
         {1, -1, -1, 1}, {1, 0, -1, 1}, {1, 1, -1, 1}
     }};
+
+    //- The bits of v (up to 21) spread to every third bit
+    std::uint64_t spreadBits(std::uint64_t v)
+    {
+        std::uint64_t r = 0;
+        for (int b = 0; b < 21; ++b)
+        {
+            r |= ((v >> b) & 1u) << (3*b);
+        }
+        return r;
+    }
+
+    //- Morton (Z-order) key of the cell (x, y, z): their bits interleaved
+    std::uint64_t mortonKey(int x, int y, int z)
+    {
+        return spreadBits(std::uint64_t(x))
+            | spreadBits(std::uint64_t(y)) << 1
+            | spreadBits(std::uint64_t(z)) << 2;
+    }
 
     //- Floor of i/n for n > 0
     int floorDiv(int i, int n)
@@ -204,7 +224,9 @@ CellList::CellList(const LeesEdwardsBox& box, double range)
     range_(range),
     n_(Eigen::Vector3i::Zero()),
     h_(Vec3::Zero()),
-    cellStart_()
+    cellStart_(),
+    cellAt_(),
+    rank_()
 {
     if (!(range > 0) || !std::isfinite(range))
     {
@@ -237,6 +259,27 @@ CellList::CellList(const LeesEdwardsBox& box, double range)
     {
         n_[d] = static_cast<int>(std::floor(cells[d]));
         h_[d] = L_[d]/n_[d];
+    }
+
+    // The cells in Morton order: rank by the interleaved bits of (x, y, z)
+    const std::size_t nCells = static_cast<std::size_t>(n_.prod());
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> keys(nCells);
+    for (std::size_t c = 0; c < nCells; ++c)
+    {
+        const int ci = static_cast<int>(c);
+        keys[c] =
+        {
+            mortonKey(ci % n_.x(), (ci/n_.x()) % n_.y(), ci/(n_.x()*n_.y())),
+            static_cast<std::uint32_t>(c)
+        };
+    }
+    std::sort(keys.begin(), keys.end());
+    cellAt_.resize(nCells);
+    rank_.resize(nCells);
+    for (std::size_t k = 0; k < nCells; ++k)
+    {
+        cellAt_[k] = keys[k].second;
+        rank_[keys[k].second] = static_cast<std::uint32_t>(k);
     }
 }
 
@@ -283,7 +326,7 @@ std::vector<std::size_t> CellList::sort(const std::vector<Vec3>& x)
     cellStart_.assign(nCells + 1, 0);
     for (std::size_t i = 0; i < N; ++i)
     {
-        cell[i] = cellOf(x[i]);
+        cell[i] = rank_[cellOf(x[i])];
         ++cellStart_[cell[i] + 1];
     }
     for (std::size_t c = 0; c < nCells; ++c)
@@ -308,7 +351,7 @@ void CellList::checkSorted(const std::vector<Vec3>& x) const
     {
         for (std::size_t i = cellStart_[c]; i < cellStart_[c + 1]; ++i)
         {
-            sorted = sorted && cellOf(x[i]) == c;
+            sorted = sorted && rank_[cellOf(x[i])] == c;
         }
     }
     if (!sorted)
@@ -379,7 +422,7 @@ void CellList::findPairs
         std::array<NeighbourCell, maxStencilCells> cells;
         for (std::size_t c = cellBegin[k]; c < cellBegin[k + 1]; ++c)
         {
-            const int ci = static_cast<int>(c);
+            const int ci = static_cast<int>(cellAt_[c]);
             const Eigen::Vector3i coords
             (
                 ci % n_.x(), (ci/n_.x()) % n_.y(), ci/(n_.x()*n_.y())
@@ -395,7 +438,7 @@ void CellList::findPairs
                 {
                     // |x_j + shift - x_i| < a_i + a_j + gap
                     const Vec3 xi = particles.x[i] - cells[b].shift;
-                    const std::uint32_t nb = cells[b].cell;
+                    const std::uint32_t nb = rank_[cells[b].cell];
                     std::size_t jBegin = cellStart_[nb];
                     if (full || nb == c)
                     {
@@ -421,7 +464,8 @@ void CellList::findPairs
 
 std::size_t CellList::bytes() const
 {
-    return cellStart_.capacity()*sizeof(std::uint32_t);
+    return (cellStart_.capacity() + cellAt_.capacity() + rank_.capacity())
+        *sizeof(std::uint32_t);
 }
 
 
