@@ -18,29 +18,36 @@ namespace
     using Vec6 = HydrodynamicResistance::Vec6;
     using Block = HydrodynamicResistance::Block;
 
-    //- Diagonal 6 x 6 block of R_Lub of one sphere of the pair, from its
-    //  self entries (ii or jj) of X^A, Y^A, Y^B, Y^C (layout of
-    //  Lubrication.H: force-velocity A, force-spin Y^B [n x], torque-velocity
-    //  -Y^B [n x], torque-spin Y^C T)
-    Block selfBlock(const Vec3& n, double XA, double YA, double YB, double YC)
+    //- The coupling of a lubricated pair on one of its spheres: the terms
+    //  of R_Lub on it due to the motion xp of its partner (Lubrication.H
+    //  layout): the force X^A (n.u_p) n + Y^A u_p,T + Bf n x omega_p, the
+    //  torque -Bt n x u_p + Y^C omega_p,T (HydrodynamicResistance::
+    //  Coupling)
+    inline void addCoupling
+    (
+        const Vec3& n,
+        double XA,
+        double YA,
+        double Bf,
+        double Bt,
+        double YC,
+        const double* xp,
+        double (&y)[6]
+    )
     {
-        const Mat3 N = outer(n, n);
-        const Mat3 T = Mat3::Identity() - N;
-        const Mat3 nx = crossMatrix(n);
-        Block D;
-        D.topLeftCorner<3, 3>() = XA*N + YA*T;
-        D.topRightCorner<3, 3>() = YB*nx;
-        D.bottomLeftCorner<3, 3>() = -YB*nx;
-        D.bottomRightCorner<3, 3>() = YC*T;
-        return D;
+        const double nx = n.x(), ny = n.y(), nz = n.z();
+        const double ux = xp[0], uy = xp[1], uz = xp[2];
+        const double wx = xp[3], wy = xp[4], wz = xp[5];
+        const double nu = (XA - YA)*(nx*ux + ny*uy + nz*uz);
+        const double nw = YC*(nx*wx + ny*wy + nz*wz);
+        y[0] += nu*nx + YA*ux + Bf*(ny*wz - nz*wy);
+        y[1] += nu*ny + YA*uy + Bf*(nz*wx - nx*wz);
+        y[2] += nu*nz + YA*uz + Bf*(nx*wy - ny*wx);
+        y[3] += YC*wx - nw*nx - Bt*(ny*uz - nz*uy);
+        y[4] += YC*wy - nw*ny - Bt*(nz*ux - nx*uz);
+        y[5] += YC*wz - nw*nz - Bt*(nx*uy - ny*ux);
     }
 
-    //- The coupling of a lubricated pair on one of its spheres: the terms
-    //  of R_Lub on it due to the motion xp of its partner, with the
-    //  pair's off-diagonal scalars (Lubrication.H layout): the force
-    //  X^A (n.u_p) n + Y^A u_p,T + Bf n x omega_p, the torque
-    //  -Bt n x u_p + Y^C omega_p,T, where (Bf, Bt) = (Y^B_ji, Y^B_ij) on
-    //  the first sphere and (Y^B_ij, Y^B_ji) on the second
     inline Vec6 coupling
     (
         const Vec3& n,
@@ -52,13 +59,83 @@ namespace
         const Vec6& xp
     )
     {
-        const Vec3 u = xp.head<3>();
-        const Vec3 w = xp.tail<3>();
-        const double nu = n.dot(u);
-        Vec6 y;
-        y.head<3>() = (XA - YA)*nu*n + YA*u + Bf*n.cross(w);
-        y.tail<3>() = -Bt*n.cross(u) + YC*(w - n.dot(w)*n);
-        return y;
+        double y[6] = {0, 0, 0, 0, 0, 0};
+        addCoupling(n, XA, YA, Bf, Bt, YC, xp.data(), y);
+        return Eigen::Map<const Vec6>(y);
+    }
+
+    inline Vec6 coupling(const HydrodynamicResistance::Coupling& c, const Vec6& xp)
+    {
+        return coupling(c.n, c.XA, c.YA, c.Bf, c.Bt, c.YC, xp);
+    }
+
+    //- S += the self block of R_Lub of one sphere of a pair, from its self
+    //  entries (ii or jj): X^A N + Y^A T, Y^B [n x] and Y^C T
+    inline void addSelf
+    (
+        HydrodynamicResistance::SelfBlock& S,
+        const Vec3& n,
+        double XA,
+        double YA,
+        double YB,
+        double YC
+    )
+    {
+        const double d = XA - YA;
+        S.A[0] += YA + d*n.x()*n.x();
+        S.A[1] += d*n.x()*n.y();
+        S.A[2] += d*n.x()*n.z();
+        S.A[3] += YA + d*n.y()*n.y();
+        S.A[4] += d*n.y()*n.z();
+        S.A[5] += YA + d*n.z()*n.z();
+        S.b += YB*n;
+        S.C[0] += YC*(1 - n.x()*n.x());
+        S.C[1] -= YC*n.x()*n.y();
+        S.C[2] -= YC*n.x()*n.z();
+        S.C[3] += YC*(1 - n.y()*n.y());
+        S.C[4] -= YC*n.y()*n.z();
+        S.C[5] += YC*(1 - n.z()*n.z());
+    }
+
+    //- The symmetric 3 x 3 of its 6 upper entries (xx, xy, xz, yy, yz, zz)
+    inline Mat3 symmetric(const double (&s)[6])
+    {
+        Mat3 M;
+        M << s[0], s[1], s[2],
+             s[1], s[3], s[4],
+             s[2], s[4], s[5];
+        return M;
+    }
+
+    //- y += the self block applied to x: (A u + b x omega, -b x u + C omega)
+    inline void addSelf
+    (
+        const HydrodynamicResistance::SelfBlock& S,
+        const double* x,
+        double (&y)[6]
+    )
+    {
+        const double ux = x[0], uy = x[1], uz = x[2];
+        const double wx = x[3], wy = x[4], wz = x[5];
+        const double bx = S.b.x(), by = S.b.y(), bz = S.b.z();
+        y[0] += S.A[0]*ux + S.A[1]*uy + S.A[2]*uz + (by*wz - bz*wy);
+        y[1] += S.A[1]*ux + S.A[3]*uy + S.A[4]*uz + (bz*wx - bx*wz);
+        y[2] += S.A[2]*ux + S.A[4]*uy + S.A[5]*uz + (bx*wy - by*wx);
+        y[3] += S.C[0]*wx + S.C[1]*wy + S.C[2]*wz - (by*uz - bz*uy);
+        y[4] += S.C[1]*wx + S.C[3]*wy + S.C[4]*wz - (bz*ux - bx*uz);
+        y[5] += S.C[2]*wx + S.C[4]*wy + S.C[5]*wz - (bx*uy - by*ux);
+    }
+
+    //- The self block as a 6 x 6 matrix
+    inline Block full(const HydrodynamicResistance::SelfBlock& S)
+    {
+        const Mat3 bx = crossMatrix(S.b);
+        Block D;
+        D.topLeftCorner<3, 3>() = symmetric(S.A);
+        D.topRightCorner<3, 3>() = bx;
+        D.bottomLeftCorner<3, 3>() = -bx;
+        D.bottomRightCorner<3, 3>() = symmetric(S.C);
+        return D;
     }
 
     //- The row of the first sphere of a lubricated pair (its own motion xi,
@@ -66,14 +143,13 @@ namespace
     //  self terms have the form of a coupling with Bf = Bt = Y^B_ii
     inline Vec6 firstRow
     (
-        const HydrodynamicResistance::Pair& c,
+        const HydrodynamicResistance::Coupling& c,
         const double (&ii)[4],
         const Vec6& xi,
         const Vec6& xj
     )
     {
-        return coupling(c.n, ii[0], ii[1], ii[2], ii[2], ii[3], xi)
-            + coupling(c.n, c.XA, c.YA, c.YBji, c.YBij, c.YC, xj);
+        return coupling(c.n, ii[0], ii[1], ii[2], ii[2], ii[3], xi) + coupling(c, xj);
     }
 
     //- The modes of a pair in contact (header): u_n, u_t, u_r of its
@@ -253,7 +329,20 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
     }
     const std::size_t nPairs = first_[N];
     partner_.resize(nPairs);
-    pairs_.resize(nPairs);
+    #pragma omp parallel for schedule(static) if(threaded(N))
+    for (std::size_t i = 0; i < N; ++i)
+    {
+        std::uint32_t s = first_[i];
+        for (std::uint32_t k = pairs.offset[i]; k < pairs.offset[i + 1]; ++k)
+        {
+            if (!std::isnan(separation_[k].x()))
+            {
+                partner_[s++] = pairs.j[k];
+            }
+        }
+    }
+    rows_.build(first_, partner_);
+    couplings_.resize(rows_.partner.size());
     secondRows_.resize(nPairs);
     selfR_.resize(N);
     ambientForces_.resize(6*N);
@@ -267,7 +356,8 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
     const Mat3 unitShear = unit.E();
 
     // Pass 1, over the first particles: Stokes drag, pair coefficients,
-    // the terms of i; those of j wait in secondRows_. Stresslets per block.
+    // the terms of i and its couplings (the first entries of its row, in
+    // slot order); those of j wait in secondRows_. Stresslets per block.
     std::vector<Mat3> stokesS(nB, Mat3::Zero());
     std::vector<Mat3> stokesUnitS(nB, Mat3::Zero());
     std::vector<Mat3> lubricationS(nB, Mat3::Zero());
@@ -289,10 +379,11 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
             {
                 stokesUnitS[blk] += drag_.eval(a, unit.U, unit.Omega(), unit).S;
             }
-            Block R = Block::Zero();
+            SelfBlock R{{0, 0, 0, 0, 0, 0}, Vec3::Zero(), {0, 0, 0, 0, 0, 0}};
 
             const Vec6 vi = relativeVelocity(p, fi, i);
             std::uint32_t s = first_[i];
+            std::uint32_t e = rows_.offset[i];
             for (std::uint32_t k = pairs.offset[i]; k < pairs.offset[i + 1]; ++k)
             {
                 const Vec3& r = separation_[k];
@@ -303,10 +394,9 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
                 const std::uint32_t j = pairs.j[k];
                 const PairGeometry g = PairGeometry::make(r, a, p.a[j]);
                 const LubricationCoefficients c = lubrication_->coefficients(g);
-                partner_[s] = j;
-                Pair& q = pairs_[s];
-                q = Pair{g.n, c.XA.ij, c.YA.ij, c.YB.ij, c.YB.ji, c.YC.ij};
-                R += selfBlock(g.n, c.XA.ii, c.YA.ii, c.YB.ii, c.YC.ii);
+                Coupling& q = couplings_[e++];
+                q = Coupling{g.n, c.XA.ij, c.YA.ij, c.YB.ji, c.YB.ij, c.YC.ij};
+                addSelf(R, g.n, c.XA.ii, c.YA.ii, c.YB.ii, c.YC.ii);
 
                 // (A.3): F^E, T^E of i now, of j in pass 2
                 const Lubrication::PairVector fE = Lubrication::strainForces
@@ -344,14 +434,14 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
             selfR_[i] = R;
         }
     }
-    rows_.build(first_, partner_);
 
-    // Pass 2, over the second particles: their self blocks, F^E, T^E (and
-    // F_s), in pair order
+    // Pass 2, over the second particles: their couplings (the coupling of
+    // the first particle with Bf and Bt exchanged), self blocks, F^E, T^E
+    // (and F_s), in pair order
     #pragma omp parallel for schedule(static) if(threaded(N))
     for (std::size_t j = 0; j < N; ++j)
     {
-        Block& R = selfR_[j];
+        SelfBlock& R = selfR_[j];
         for (std::uint32_t e = rows_.offset[j]; e < rows_.offset[j + 1]; ++e)
         {
             if (!PairRows::second(rows_.slot[e]))
@@ -359,8 +449,11 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
                 continue;
             }
             const std::uint32_t s = PairRows::slotOf(rows_.slot[e]);
+            const std::uint32_t i = rows_.partner[e];
+            const Coupling& c = couplings_[rows_.offset[i] + s - first_[i]];
+            couplings_[e] = Coupling{c.n, c.XA, c.YA, c.Bt, c.Bf, c.YC};
             const SecondRow& second = secondRows_[s];
-            R += selfBlock(pairs_[s].n, second.jj[0], second.jj[1], second.jj[2], second.jj[3]);
+            addSelf(R, c.n, second.jj[0], second.jj[1], second.jj[2], second.jj[3]);
             ambientForces_.segment<6>(6*j) += second.fE;
             if (rateChanges_)
             {
@@ -445,7 +538,7 @@ Mat3 HydrodynamicResistance::lubricationStresslet
                 }
                 const std::uint32_t s = rows_.slot[e];
                 const PairStress& q = pairStress_[s];
-                const Vec6 yi = firstRow(pairs_[s], q.ii, vi, v.segment<6>(6*rows_.partner[e]));
+                const Vec6 yi = firstRow(couplings_[e], q.ii, vi, v.segment<6>(6*rows_.partner[e]));
                 S[blk] += symm(outer(q.r, a*q.fE + b*q.fS - yi.head<3>()));
             }
         }
@@ -485,7 +578,7 @@ HydrodynamicResistance::Block HydrodynamicResistance::diagonalBlock
     // R: the Stokes drag (A.1) and the self blocks of R_Lub; M/dt
     const double eta = drag_.params().eta;
     const double a = p.a[i];
-    Block A = selfR_[i] + dt*K + G;
+    Block A = full(selfR_[i]) + dt*K + G;
     A.diagonal() +=
         (Vec6() << Vec3::Constant(6*pi*eta*a + invDt*p.m[i]),
                    Vec3::Constant(8*pi*eta*a*a*a + invDt*p.I[i])).finished();
@@ -560,12 +653,16 @@ void HydrodynamicResistance::setStep(const Particles& p, double dt, bool inertia
         diagonal_[i] = {6*pi*eta*a + invDt*p.m[i], 8*pi*eta*a*a*a + invDt*p.I[i]};
         const Eigen::LLT<Block> llt(diagonalBlock(p, i, dt, invDt));
         const Block inverse = llt.solve(Block::Identity());
-        inverseA_[i] = inverse.cast<float>();
-        if
-        (
-            llt.info() != Eigen::Success || !inverse.allFinite()
-         || !inverseA_[i].allFinite()
-        )
+        bool finite = inverse.allFinite();
+        for (int r = 0, k = 0; r < 6; ++r)
+        {
+            for (int c = r; c < 6; ++c, ++k)
+            {
+                inverseA_[i][k] = static_cast<float>(inverse(r, c));
+                finite = finite && std::isfinite(inverseA_[i][k]);
+            }
+        }
+        if (llt.info() != Eigen::Success || !finite)
         {
             failed = std::min(failed, i);
         }
@@ -633,17 +730,19 @@ void HydrodynamicResistance::apply(const Vector& x, Vector& y) const
     for (std::size_t i = 0; i < N; ++i)
     {
         const Vec6 xi = x.segment<6>(6*i);
-        Vec6 yi = selfR_[i]*xi;
-        yi.head<3>() += diagonal_[i][0]*xi.head<3>();
-        yi.tail<3>() += diagonal_[i][1]*xi.tail<3>();
+        const SelfBlock& S = selfR_[i];
+        const double* X = x.data();
+        double a[6];
+        for (int k = 0; k < 3; ++k)
+        {
+            a[k] = diagonal_[i][0]*xi[k];
+            a[k + 3] = diagonal_[i][1]*xi[k + 3];
+        }
+        addSelf(S, X + 6*i, a);
         for (std::uint32_t e = rows_.offset[i]; e < rows_.offset[i + 1]; ++e)
         {
-            const std::uint32_t code = rows_.slot[e];
-            const Pair& c = pairs_[PairRows::slotOf(code)];
-            const Vec6 xj = x.segment<6>(6*rows_.partner[e]);
-            yi += PairRows::second(code)
-              ? coupling(c.n, c.XA, c.YA, c.YBij, c.YBji, c.YC, xj)
-              : coupling(c.n, c.XA, c.YA, c.YBji, c.YBij, c.YC, xj);
+            const Coupling& c = couplings_[e];
+            addCoupling(c.n, c.XA, c.YA, c.Bf, c.Bt, c.YC, X + 6*rows_.partner[e], a);
         }
         for (std::uint32_t e = contactRows_.offset[i]; e < contactRows_.offset[i + 1]; ++e)
         {
@@ -654,15 +753,21 @@ void HydrodynamicResistance::apply(const Vector& x, Vector& y) const
             if (second)
             {
                 contactProduct(c, xj, xi, rows1, rows2);
-                yi += rows2;
             }
             else
             {
                 contactProduct(c, xi, xj, rows1, rows2);
-                yi += rows1;
+            }
+            const Vec6& rows = second ? rows2 : rows1;
+            for (int k = 0; k < 6; ++k)
+            {
+                a[k] += rows[k];
             }
         }
-        y.segment<6>(6*i) = yi;
+        for (int k = 0; k < 6; ++k)
+        {
+            y[6*i + k] = a[k];
+        }
     }
 }
 
@@ -682,9 +787,31 @@ void HydrodynamicResistance::precondition
     Eigen::Index length
 ) const
 {
+    // Packed upper triangle, row by row: entry (r, c), c >= r, at
+    // 6 r - r (r - 1)/2 + c - r
+    static constexpr int at[6][6] =
+    {
+        {0, 1, 2, 3, 4, 5},
+        {1, 6, 7, 8, 9, 10},
+        {2, 7, 11, 12, 13, 14},
+        {3, 8, 12, 15, 16, 17},
+        {4, 9, 13, 16, 18, 19},
+        {5, 10, 14, 17, 19, 20}
+    };
     for (Eigen::Index i = start/6; i < (start + length)/6; ++i)
     {
-        z.segment<6>(6*i) = inverseA_[i].cast<double>()*r.segment<6>(6*i);
+        const std::array<float, 21>& P = inverseA_[i];
+        const double* ri = r.data() + 6*i;
+        double* zi = z.data() + 6*i;
+        for (int k = 0; k < 6; ++k)
+        {
+            double sum = 0;
+            for (int l = 0; l < 6; ++l)
+            {
+                sum += double(P[at[k][l]])*ri[l];
+            }
+            zi[k] = sum;
+        }
     }
 }
 

@@ -188,6 +188,25 @@ Foam::forceModelsReader::forceModelsReader(const dictionary& dict)
 }
 
 
+Foam::wordList Foam::forceModelsReader::dictionaries()
+{
+    wordList names;
+    auto add = [&](auto tag)
+    {
+        using M = typename decltype(tag)::type;
+        const std::string path(M::dictName);
+        const word top(path.substr(0, path.find('/')));
+        if (!top.empty() && !names.found(top))
+        {
+            names.append(top);
+        }
+    };
+    suspension::forEachParticleModelType(add);
+    suspension::forEachPairModelType(add);
+    return names;
+}
+
+
 template<class M>
 void Foam::forceModelsReader::read(const dictionary& dict)
 {

@@ -250,15 +250,13 @@ Foam::suspensionProperties::suspensionProperties(const objectRegistry& obr)
     )
 {
     rejectOutputDict(*this);
-    checkEntries
-    (
-        *this,
-        {
-            "units", "dimensional", "population", "StokesNumber",
-            "lubrication", "contact", "electroChemical", "integration",
-            "ambientFlow"
-        }
-    );
+    wordList valid
+    ({
+        "units", "dimensional", "population", "StokesNumber", "integration",
+        "ambientFlow"
+    });
+    valid.append(forceModelsReader::dictionaries());
+    checkEntries(*this, valid);
 
     // A case larger than the machine stops here, not after the packing
     const double needed = bytesPerParticle*population_.nParticles();

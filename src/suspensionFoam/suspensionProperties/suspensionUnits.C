@@ -2,6 +2,7 @@
 #include "inputChecks.H"
 #include "forces/CriticalLoadContact.H"
 #include "forces/ElectroChemicalScales.H"
+#include "forces/ForceModels.H"
 
 #include <utility>
 
@@ -100,8 +101,46 @@ void Foam::suspensionUnits::setGroup
 }
 
 
+void Foam::suspensionUnits::checkMapped() const
+{
+    // The model dictionaries that convert() sets from SI input
+    const wordList mapped({"lubrication", "contact", "electroChemical"});
+    auto check = [&](auto tag)
+    {
+        using M = typename decltype(tag)::type;
+        const wordList path(fileName(M::dictName).components());
+        if (path.empty() || mapped.found(path.first()))
+        {
+            return;
+        }
+        const dictionary* d = &reduced_;
+        for (const word& part : path)
+        {
+            d = d->isDict(part, keyType::LITERAL) ? &d->subDict(part) : nullptr;
+            if (!d)
+            {
+                return;
+            }
+        }
+        if (d->getOrDefault<bool>("active", false))
+        {
+            FatalIOErrorInFunction(*d)
+                << "Dictionary " << d->name() << " (model " << M::typeName
+                << ") has no SI mapping under 'units dimensional': its"
+                << " entries would be read in reduced units. Set 'units"
+                << " reduced' and give them in units of a0, eta0 and gammaDot,"
+                << " or switch the model off (active false)" << nl
+                << exit(FatalIOError);
+        }
+    };
+    suspension::forEachParticleModelType(check);
+    suspension::forEachPairModelType(check);
+}
+
+
 void Foam::suspensionUnits::convert()
 {
+    checkMapped();
     wordList valid;
     for (const auto& e : siEntries)
     {
