@@ -304,7 +304,7 @@ namespace
         const LeesEdwardsBox& box,
         const AmbientFlow& flow,
         const PairList& near,
-        const PairList& far
+        const PairRows& far
     )
     {
         Forces f;

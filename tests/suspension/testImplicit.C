@@ -374,7 +374,7 @@ TEST(Implicit, ResistanceGivesTheForcesAndStressOfTheExplicitPairLoop)
     PairList pairs = s.pairs;
     ForceField forces(s.models, q.a);
     const ForceSummary explicitSummary =
-        forces.advance(q, s.box, s.flow, pairs, PairList(), 0);
+        forces.advance(q, s.box, s.flow, pairs, PairRows(), 0);
 
     HydrodynamicResistance R(s.models.drag(), s.models.get<Lubrication>());
     R.assemble(s.p, s.box, s.ambient, s.pairs);

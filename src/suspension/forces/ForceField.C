@@ -521,7 +521,7 @@ void ForceField::farPass
     ModelList<Ms...>,
     const Particles& p,
     const LeesEdwardsBox& box,
-    const PairList& far,
+    const PairRows& far,
     const Output& out
 )
 {
@@ -539,11 +539,10 @@ void ForceField::farPass
         const double gap[] = {std::get<const Ms*>(ms)->gap()...};
         const double maxGap = *std::max_element(gap, gap + nM);
         const bool perParticle = out.S != nullptr;
-        farForce_.resize(far.nPairs());
 
-        // Pass 1, over the first particles i: the pair's central force
-        // f n, its stresslet (f/|r|) r r (eq. 9d, summed as six entries),
-        // i's part; the slot keeps s = f/|r| for j (0: out of range)
+        // Over the particles i, their rows: the central force f n of each
+        // partner, half of the pair's stresslet (f/|r|) r r (eq. 9d, six
+        // entries), per block
         #pragma omp parallel for schedule(static) if(threaded(N))
         for (std::size_t b = 0; b < reductionBlocks(N); ++b)
         {
@@ -557,7 +556,7 @@ void ForceField::farPass
                 double Wi[6] = {0, 0, 0, 0, 0, 0};
                 for (std::uint32_t k = far.offset[i]; k < far.offset[i + 1]; ++k)
                 {
-                    const std::uint32_t j = far.j[k];
+                    const std::uint32_t j = far.partner[k];
                     Vec3 r = p.x[j] - xi;
                     box.minimumImage(r);
                     const double d2 = r.squaredNorm();
@@ -565,12 +564,12 @@ void ForceField::farPass
                     const double R = ai + aj + maxGap;
                     if (!(d2 < R*R))
                     {
-                        farForce_[k] = 0;
                         continue;
                     }
                     const double d = std::sqrt(d2);
                     const double invD = 1/d;
-                    const PairGeometry g{r, d, invD*r, ai, aj, d - ai - aj};
+                    // h as d - (a_i + a_j): the same from both sides
+                    const PairGeometry g{r, d, invD*r, ai, aj, d - (ai + aj)};
                     const double rr[6] =
                     {
                         r.x()*r.x(), r.x()*r.y(), r.x()*r.z(),
@@ -585,12 +584,11 @@ void ForceField::farPass
                             s += sm;
                             for (int c = 0; c < 6; ++c)
                             {
-                                W[m][c] += sm*rr[c];
+                                W[m][c] += 0.5*sm*rr[c];
                             }
                         }
                     });
                     Fi += s*r;
-                    farForce_[k] = s;
                     if (perParticle)
                     {
                         for (int c = 0; c < 6; ++c)
@@ -607,40 +605,6 @@ void ForceField::farPass
                 blockS_[b*nC + contribution[m]] += symmetricMatrix(W[m]);
             }
         }
-
-        // Pass 2, over the second particles j in transposed order: -s r,
-        // r recomputed exactly as in pass 1
-        #pragma omp parallel for schedule(static) if(threaded(N))
-        for (std::size_t j = 0; j < N; ++j)
-        {
-            Vec3 Fj = Vec3::Zero();
-            double Wj[6] = {0, 0, 0, 0, 0, 0};
-            for (std::uint32_t t = far.offsetT[j]; t < far.offsetT[j + 1]; ++t)
-            {
-                const double s = farForce_[far.slotT[t]];
-                if (s == 0)
-                {
-                    continue;
-                }
-                Vec3 r = p.x[j] - p.x[far.rowT[t]];
-                box.minimumImage(r);
-                Fj -= s*r;
-                if (perParticle)
-                {
-                    const double rr[6] =
-                    {
-                        r.x()*r.x(), r.x()*r.y(), r.x()*r.z(),
-                        r.y()*r.y(), r.y()*r.z(), r.z()*r.z()
-                    };
-                    for (int c = 0; c < 6; ++c)
-                    {
-                        Wj[c] += 0.5*s*rr[c];
-                    }
-                }
-            }
-            if (out.F) (*out.F)[j] += Fj;
-            if (perParticle) (*out.S)[j] += symmetricMatrix(Wj);
-        }
     }
 }
 
@@ -654,7 +618,7 @@ ForceSummary ForceField::run
     const AmbientFlow& flow,
     const PairList& near,
     PairList* history,
-    const PairList& far,
+    const PairRows& far,
     double dt,
     Forces forces,
     const Output& out
@@ -772,7 +736,7 @@ ForceSummary ForceField::advance
     const LeesEdwardsBox& box,
     const AmbientFlow& flow,
     PairList& near,
-    const PairList& far,
+    const PairRows& far,
     double dt,
     Forces forces,
     std::vector<LinearisedContact>* contacts
@@ -792,7 +756,7 @@ ForceSummary ForceField::evaluate
     const LeesEdwardsBox& box,
     const AmbientFlow& flow,
     const PairList& near,
-    const PairList& far,
+    const PairRows& far,
     const Output& out,
     Forces forces
 )

@@ -266,14 +266,15 @@ void NeighbourSearch::rebuild
     particles.permute(cells_->sort(particles.x));
     if (farList)
     {
-        cells_->findPairs(particles, box, searchGap, params_.stencil, far_);
-        nearPairs(particles, box, far_, gap, near);
-        far_.transpose(true);
+        PairList half;
+        cells_->findPairs(particles, box, searchGap, params_.stencil, half);
+        nearPairs(particles, box, half, gap, near);
+        far_.build(half.offset, half.j, false);
     }
     else
     {
         cells_->findPairs(particles, box, gap, params_.stencil, near);
-        far_ = PairList();
+        far_ = PairRows();
     }
     near.transpose();
     near.clearHistory();
