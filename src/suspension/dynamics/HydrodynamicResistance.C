@@ -48,27 +48,6 @@ namespace
         y[5] += YC*wz - nw*nz - Bt*(nx*uy - ny*ux);
     }
 
-    inline Vec6 coupling
-    (
-        const Vec3& n,
-        double XA,
-        double YA,
-        double Bf,
-        double Bt,
-        double YC,
-        const Vec6& xp
-    )
-    {
-        double y[6] = {0, 0, 0, 0, 0, 0};
-        addCoupling(n, XA, YA, Bf, Bt, YC, xp.data(), y);
-        return Eigen::Map<const Vec6>(y);
-    }
-
-    inline Vec6 coupling(const HydrodynamicResistance::Coupling& c, const Vec6& xp)
-    {
-        return coupling(c.n, c.XA, c.YA, c.Bf, c.Bt, c.YC, xp);
-    }
-
     //- S += the self block of R_Lub of one sphere of a pair, from its self
     //  entries (ii or jj): X^A N + Y^A T, Y^B [n x] and Y^C T
     inline void addSelf
@@ -149,7 +128,10 @@ namespace
         const Vec6& xj
     )
     {
-        return coupling(c.n, ii[0], ii[1], ii[2], ii[2], ii[3], xi) + coupling(c, xj);
+        double y[6] = {0, 0, 0, 0, 0, 0};
+        addCoupling(c.n, ii[0], ii[1], ii[2], ii[2], ii[3], xi.data(), y);
+        addCoupling(c.n, c.XA, c.YA, c.Bf, c.Bt, c.YC, xj.data(), y);
+        return Eigen::Map<const Vec6>(y);
     }
 
     //- The modes of a pair in contact (header): u_n, u_t, u_r of its
