@@ -18,6 +18,7 @@ Usage
 
 #include <cmath>
 #include <iostream>
+#include <string>
 #include <map>
 #include <memory>
 #include <sstream>
@@ -160,6 +161,22 @@ namespace
     {
         return b ? "yes" : "–";
     }
+
+    //- Text for a cell of a Markdown table: '|' escaped, so that a
+    //  model's text cannot split the row
+    std::string cell(const std::string& text)
+    {
+        std::string out;
+        for (const char c : text)
+        {
+            if (c == '|')
+            {
+                out += '\\';
+            }
+            out += c;
+        }
+        return out;
+    }
 }
 
 
@@ -242,8 +259,8 @@ int main()
     {
         std::cout
             << "| `" << e.dict << "` | " << e.name << " | "
-            << (e.required ? "yes" : "no") << " | " << e.range << " | "
-            << e.meaning << " |\n";
+            << (e.required ? "yes" : "no") << " | " << cell(e.range) << " | "
+            << cell(e.meaning) << " |\n";
     }
     return 0;
 }
