@@ -534,6 +534,19 @@ Mat3 HydrodynamicResistance::lubricationStresslet
 }
 
 
+std::array<double, 2> HydrodynamicResistance::dragAndInertia
+(
+    const Particles& p,
+    std::size_t i,
+    double invDt
+) const
+{
+    const double eta = drag_.params().eta;
+    const double a = p.a[i];
+    return {6*pi*eta*a + invDt*p.m[i], 8*pi*eta*a*a*a + invDt*p.I[i]};
+}
+
+
 HydrodynamicResistance::Block HydrodynamicResistance::diagonalBlock
 (
     const Particles& p,
@@ -558,12 +571,9 @@ HydrodynamicResistance::Block HydrodynamicResistance::diagonalBlock
     }
 
     // R: the Stokes drag (A.1) and the self blocks of R_Lub; M/dt
-    const double eta = drag_.params().eta;
-    const double a = p.a[i];
+    const std::array<double, 2> d = dragAndInertia(p, i, invDt);
     Block A = full(selfR_[i]) + dt*K + G;
-    A.diagonal() +=
-        (Vec6() << Vec3::Constant(6*pi*eta*a + invDt*p.m[i]),
-                   Vec3::Constant(8*pi*eta*a*a*a + invDt*p.I[i])).finished();
+    A.diagonal() += (Vec6() << Vec3::Constant(d[0]), Vec3::Constant(d[1])).finished();
     return A;
 }
 
@@ -613,7 +623,6 @@ std::string HydrodynamicResistance::blockFailure
 void HydrodynamicResistance::setStep(const Particles& p, double dt, bool inertia)
 {
     const std::size_t N = p.size();
-    const double eta = drag_.params().eta;
     const double invDt = inertia ? 1/dt : 0;
     diagonal_.resize(N);
     inverseA_.resize(N);
@@ -631,8 +640,7 @@ void HydrodynamicResistance::setStep(const Particles& p, double dt, bool inertia
     #pragma omp parallel for schedule(static) reduction(min:failed) if(threaded(N))
     for (std::size_t i = 0; i < N; ++i)
     {
-        const double a = p.a[i];
-        diagonal_[i] = {6*pi*eta*a + invDt*p.m[i], 8*pi*eta*a*a*a + invDt*p.I[i]};
+        diagonal_[i] = dragAndInertia(p, i, invDt);
         const Eigen::LLT<Block> llt(diagonalBlock(p, i, dt, invDt));
         const Block inverse = llt.solve(Block::Identity());
         bool finite = inverse.allFinite();
