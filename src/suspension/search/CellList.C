@@ -60,6 +60,13 @@ namespace
         return r;
     }
 
+    //- The (x, y, z) indices of cell c = x + n_x (y + n_y z)
+    Eigen::Vector3i coordinates(const Eigen::Vector3i& n, std::uint32_t c)
+    {
+        const int ci = static_cast<int>(c);
+        return Eigen::Vector3i(ci % n.x(), (ci/n.x()) % n.y(), ci/(n.x()*n.y()));
+    }
+
     //- Morton (Z-order) key of the cell (x, y, z): their bits interleaved
     std::uint64_t mortonKey(int x, int y, int z)
     {
@@ -266,12 +273,8 @@ CellList::CellList(const LeesEdwardsBox& box, double range)
     std::vector<std::pair<std::uint64_t, std::uint32_t>> keys(nCells);
     for (std::size_t c = 0; c < nCells; ++c)
     {
-        const int ci = static_cast<int>(c);
-        keys[c] =
-        {
-            mortonKey(ci % n_.x(), (ci/n_.x()) % n_.y(), ci/(n_.x()*n_.y())),
-            static_cast<std::uint32_t>(c)
-        };
+        const Eigen::Vector3i x = coordinates(n_, static_cast<std::uint32_t>(c));
+        keys[c] = {mortonKey(x.x(), x.y(), x.z()), static_cast<std::uint32_t>(c)};
     }
     std::sort(keys.begin(), keys.end());
     cellAt_.resize(nCells);
@@ -422,11 +425,7 @@ void CellList::findPairs
         std::array<NeighbourCell, maxStencilCells> cells;
         for (std::size_t c = cellBegin[k]; c < cellBegin[k + 1]; ++c)
         {
-            const int ci = static_cast<int>(cellAt_[c]);
-            const Eigen::Vector3i coords
-            (
-                ci % n_.x(), (ci/n_.x()) % n_.y(), ci/(n_.x()*n_.y())
-            );
+            const Eigen::Vector3i coords = coordinates(n_, cellAt_[c]);
             const int nNb = full
               ? neighbourCells(n_, L_, delta, shift, coords, fullStrips, cells)
               : neighbourCells(n_, L_, delta, shift, coords, halfStrips, cells);
