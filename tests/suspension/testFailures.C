@@ -248,7 +248,9 @@ TEST(Failures, DiagonalBlockThroughTheResistance)
     const std::int64_t id1 = p.id[1];
     const std::int64_t id0 = p.id[0];
 
-    HydrodynamicResistance R(StokesDrag(), &lubrication);
+    ForceModels models;
+    models.set(lubrication);
+    HydrodynamicResistance R(models);
     R.assemble(p, box, ambient, pairs);
     ASSERT_EQ(R.nPairs(), 1u);
     EXPECT_NO_THROW(R.setStep(p, 1e-3, true));

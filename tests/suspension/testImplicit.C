@@ -257,7 +257,7 @@ namespace
 TEST(Implicit, MatrixFreeProductEqualsDenseAssembly)
 {
     RandomBox s(3);
-    HydrodynamicResistance R(s.models.drag(), s.models.get<Lubrication>());
+    HydrodynamicResistance R(s.models);
     R.assemble(s.p, s.box, s.ambient, s.pairs);
     ASSERT_GT(R.nPairs(), 20u);
 
@@ -320,8 +320,8 @@ TEST(Implicit, PreconditionerInvertsTheDiagonalBlocksWithContacts)
             });
         }
     }
-    HydrodynamicResistance R(s.models.drag(), s.models.get<Lubrication>());
-    HydrodynamicResistance R0(s.models.drag(), s.models.get<Lubrication>());
+    HydrodynamicResistance R(s.models);
+    HydrodynamicResistance R0(s.models);
     R.assemble(s.p, s.box, s.ambient, s.pairs, contacts);
     R0.assemble(s.p, s.box, s.ambient, s.pairs);
     ASSERT_GT(R.nContacts(), 10u);
@@ -376,7 +376,7 @@ TEST(Implicit, ResistanceGivesTheForcesAndStressOfTheExplicitPairLoop)
     const ForceSummary explicitSummary =
         forces.advance(q, s.box, s.flow, pairs, PairRows(), 0);
 
-    HydrodynamicResistance R(s.models.drag(), s.models.get<Lubrication>());
+    HydrodynamicResistance R(s.models);
     R.assemble(s.p, s.box, s.ambient, s.pairs);
     R.setStep(s.p, 1, false);
     Eigen::VectorXd RV;
@@ -385,12 +385,58 @@ TEST(Implicit, ResistanceGivesTheForcesAndStressOfTheExplicitPairLoop)
     const Eigen::VectorXd Fexplicit = s.stack(q.F, q.T, false);
     EXPECT_LT((F - Fexplicit).norm(), 1e-12*Fexplicit.norm());
 
-    for (const char* name : {"stokes", "lubrication"})
+    std::vector<int> hydrodynamic = R.pairContributions();
+    ASSERT_EQ(hydrodynamic.size(), 1u);
+    hydrodynamic.push_back(contributionIndex("stokes"));
+    for (const int c : hydrodynamic)
     {
-        const int c = contributionIndex(name);
         const Mat3& S = explicitSummary.stresslet[c];
-        EXPECT_LT((summary.stresslet[c] - S).norm(), 1e-12*S.norm()) << name;
+        EXPECT_LT((summary.stresslet[c] - S).norm(), 1e-12*S.norm())
+            << contributionNames()[c];
     }
+}
+
+
+namespace
+{
+    struct HydrodynamicWithResistance
+    {
+        static constexpr bool hydrodynamic = true;
+        LubricationCoefficients coefficients(const PairGeometry&) const;
+    };
+
+    struct HydrodynamicWithoutResistance
+    {
+        static constexpr bool hydrodynamic = true;
+        PairForce eval(const PairGeometry&, const PairKinematics&) const;
+    };
+
+    struct NotHydrodynamic
+    {
+        static constexpr bool hydrodynamic = false;
+    };
+}
+
+
+TEST(Implicit, RegistryRefusesAHydrodynamicModelWithoutItsResistance)
+{
+    // The check behind ForceModels.H's static_assert: an implicit
+    // integrator can drop no hydrodynamic pair model of the registry
+    EXPECT_TRUE(resistanceOfEveryHydrodynamicModel(PairModels()));
+    EXPECT_TRUE
+    (
+        resistanceOfEveryHydrodynamicModel
+        (
+            ModelList<HydrodynamicWithResistance, NotHydrodynamic>()
+        )
+    );
+    EXPECT_FALSE
+    (
+        resistanceOfEveryHydrodynamicModel
+        (
+            ModelList<Lubrication, HydrodynamicWithoutResistance, NotHydrodynamic>()
+        )
+    );
 }
 
 

@@ -326,8 +326,8 @@ TEST(ImplicitContact, LinearisedSpringsAreTheKernelsForceChange)
         PairList noPairs;
         noPairs.offset.assign(3, 0);
         noPairs.transpose();
-        HydrodynamicResistance A(ForceModels().drag(), nullptr);
-        HydrodynamicResistance A0(ForceModels().drag(), nullptr);
+        HydrodynamicResistance A{ForceModels()};
+        HydrodynamicResistance A0{ForceModels()};
         A.assemble(p, box, ambient, noPairs, {linear});
         A0.assemble(p, box, ambient, noPairs, {});
         auto contactPart = [&](const Vec12& v, double dt)

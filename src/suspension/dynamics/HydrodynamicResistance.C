@@ -252,22 +252,23 @@ namespace
 
 HydrodynamicResistance::HydrodynamicResistance
 (
-    const StokesDrag& drag,
-    const Lubrication* lubrication,
+    const ForceModels& models,
     bool implicitNormalContact,
     bool shearForces
 )
 :
-    drag_(drag),
-    lubrication_(),
+    models_(models),
+    gap_(-1),
     implicitNormalContact_(implicitNormalContact),
     rateChanges_(shearForces),
     stokesShear_(Mat3::Zero())
 {
-    if (lubrication)
+    models_.forEachResistance([&](const auto& m)
     {
-        lubrication_ = *lubrication;
-    }
+        using M = std::decay_t<decltype(m)>;
+        pairContributions_.push_back(contributionIndex(M::contribution));
+        gap_ = std::max(gap_, m.gap());
+    });
 }
 
 
@@ -282,11 +283,13 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
 {
     const std::size_t N = p.size();
     const std::size_t nB = reductionBlocks(N);
-    const double gap = lubrication_ ? lubrication_->gap() : -1;
+    const std::size_t nH = pairContributions_.size();
+    const double gap = gap_;
+    const StokesDrag& drag = models_.drag();
 
     // The minimum-image r of each slot of the list, computed once: NaN
-    // for a slot out of lubrication range; the count of each first
-    // particle
+    // for a slot out of the range of every hydrodynamic pair model; the
+    // count of each first particle
     separation_.resize(pairs.nPairs());
     first_.assign(N + 1, 0);
     #pragma omp parallel for schedule(static) if(threaded(N))
@@ -342,7 +345,7 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
     // slot order); those of j wait in secondRows_. Stresslets per block.
     std::vector<Mat3> stokesS(nB, Mat3::Zero());
     std::vector<Mat3> stokesUnitS(nB, Mat3::Zero());
-    std::vector<Mat3> lubricationS(nB, Mat3::Zero());
+    std::vector<Mat3> pairS(nB*nH, Mat3::Zero());
     #pragma omp parallel for schedule(static) if(threaded(N))
     for (std::size_t blk = 0; blk < nB; ++blk)
     {
@@ -353,13 +356,13 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
             const FlowSample& fi = ambient[i];
 
             // Drag at u = U_inf, omega = Omega_inf: the Faxen force (A.1)
-            const StokesDrag::Result d = drag_.eval(a, fi.U, fi.Omega(), fi);
+            const StokesDrag::Result d = drag.eval(a, fi.U, fi.Omega(), fi);
             Vec6 b;
             b << d.F, d.T;
             stokesS[blk] += d.S;
             if (rateChanges_)
             {
-                stokesUnitS[blk] += drag_.eval(a, unit.U, unit.Omega(), unit).S;
+                stokesUnitS[blk] += drag.eval(a, unit.U, unit.Omega(), unit).S;
             }
             SelfBlock R{{0, 0, 0, 0, 0, 0}, Vec3::Zero(), {0, 0, 0, 0, 0, 0}};
 
@@ -375,16 +378,40 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
                 }
                 const std::uint32_t j = pairs.j[k];
                 const PairGeometry g = PairGeometry::make(r, a, p.a[j]);
-                const LubricationCoefficients c = lubrication_->coefficients(g);
+                const Vec6 vj = relativeVelocity(p, ambient[j], j);
+
+                // The scalars and (A.3) F^E, T^E of the models in range
+                // added, and each model's stresslet (9b) of the force on
+                // i at the current velocities
+                LubricationCoefficients c = LubricationCoefficients::none();
+                Lubrication::PairVector fE = Lubrication::PairVector::Zero();
+                std::size_t h = 0;
+                models_.forEachResistance([&](const auto& m)
+                {
+                    const double Rm = a + p.a[j] + m.gap();
+                    if (r.squaredNorm() < Rm*Rm)
+                    {
+                        const LubricationCoefficients cm = m.coefficients(g);
+                        const Lubrication::PairVector fEm =
+                            Lubrication::strainForces(cm, g.n, fi.E(), ambient[j].E());
+                        const double ii[4] = {cm.XA.ii, cm.YA.ii, cm.YB.ii, cm.YC.ii};
+                        const Vec6 yi = firstRow
+                        (
+                            Coupling{g.n, cm.XA.ij, cm.YA.ij, cm.YB.ji, cm.YB.ij, cm.YC.ij},
+                            ii, vi, vj
+                        );
+                        pairS[blk*nH + h] +=
+                            symm(outer(g.r, fEm.segment<3>(0) - yi.head<3>()));
+                        c += cm;
+                        fE += fEm;
+                    }
+                    ++h;
+                });
                 Coupling& q = couplings_[e++];
                 q = Coupling{g.n, c.XA.ij, c.YA.ij, c.YB.ji, c.YB.ij, c.YC.ij};
                 addSelf(R, g.n, c.XA.ii, c.YA.ii, c.YB.ii, c.YC.ii);
 
-                // (A.3): F^E, T^E of i now, of j in pass 2
-                const Lubrication::PairVector fE = Lubrication::strainForces
-                (
-                    c, g.n, fi.E(), ambient[j].E()
-                );
+                // F^E, T^E of i now, of j in pass 2
                 b.head<3>() += fE.segment<3>(0);
                 b.tail<3>() += fE.segment<3>(6);
                 SecondRow& second = secondRows_[s];
@@ -406,10 +433,6 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
                     pairStress_[s] =
                         {g.r, fE.segment<3>(0), fS.segment<3>(0), {ii[0], ii[1], ii[2], ii[3]}};
                 }
-
-                // Stresslet (9b) of the force on i at the current velocities
-                const Vec6 yi = firstRow(q, ii, vi, relativeVelocity(p, ambient[j], j));
-                lubricationS[blk] += symm(outer(g.r, fE.segment<3>(0) - yi.head<3>()));
                 ++s;
             }
             ambientForces_.segment<6>(6*i) = b;
@@ -475,12 +498,15 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
     }
     contactRows_.build(first_, partner_);
 
-    Stresslets S{Mat3::Zero(), Mat3::Zero()};
+    Stresslets S{Mat3::Zero(), std::vector<Mat3>(nH, Mat3::Zero())};
     stokesShear_.setZero();
     for (std::size_t blk = 0; blk < nB; ++blk)
     {
         S.stokes += stokesS[blk];
-        S.lubrication += lubricationS[blk];
+        for (std::size_t h = 0; h < nH; ++h)
+        {
+            S.pairs[h] += pairS[blk*nH + h];
+        }
         stokesShear_ += stokesUnitS[blk];
     }
     return S;
@@ -541,7 +567,7 @@ std::array<double, 2> HydrodynamicResistance::dragAndInertia
     double invDt
 ) const
 {
-    const double eta = drag_.params().eta;
+    const double eta = models_.drag().params().eta;
     const double a = p.a[i];
     return {6*pi*eta*a + invDt*p.m[i], 8*pi*eta*a*a*a + invDt*p.I[i]};
 }
@@ -609,7 +635,8 @@ std::string HydrodynamicResistance::blockFailure
             << lambda(0) << " to " << lambda(5) << "; radius " << p.a[i]
             << ", mass " << p.m[i] << ", in " << nPairs
             << " lubricated pairs and " << nContacts << " contacts)";
-        if (lubrication_ && lubrication_->params().terms == LubricationTerms::extended)
+        const Lubrication* lubrication = models_.get<Lubrication>();
+        if (lubrication && lubrication->params().terms == LubricationTerms::extended)
         {
             msg << "; lubrication terms extended gives R_Lub negative"
                    " eigenvalues at small gaps (LubricationCoefficients.H):"

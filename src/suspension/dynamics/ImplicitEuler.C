@@ -20,11 +20,7 @@ ImplicitEuler::ImplicitEuler
 )
 :
     inertia_(inertia),
-    resistance_
-    (
-        models.drag(), models.get<Lubrication>(), implicitNormalContact,
-        rateChanges
-    ),
+    resistance_(models, implicitNormalContact, rateChanges),
     solver_(solver),
     iterations_(0),
     stokesXY_(0),
@@ -46,7 +42,10 @@ void ImplicitEuler::evaluate
         resistance_.assemble(p, box, ambient, pairs, contacts);
     stokesXY_ = S.stokes(0, 1);
     summary.stresslet[contributionIndex("stokes")] = S.stokes;
-    summary.stresslet[contributionIndex(Lubrication::contribution)] = S.lubrication;
+    for (std::size_t h = 0; h < S.pairs.size(); ++h)
+    {
+        summary.stresslet[resistance_.pairContributions()[h]] = S.pairs[h];
+    }
 }
 
 

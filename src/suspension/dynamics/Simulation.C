@@ -360,13 +360,21 @@ std::string Simulation::takeStep(double dt)
     double rate;
     auto stressControl = [&](double target)
     {
-        const int stokes = contributionIndex("stokes");
-        const int lubrication = contributionIndex(Lubrication::contribution);
-        double fixed = 0;
-        for (int c = 0; c < int(summary_.stresslet.size()); ++c)
+        std::vector<bool> hydrodynamic(summary_.stresslet.size(), false);
+        forEachParticleModelType([&](auto tag)
         {
-            const bool hydrodynamic = c == stokes || c == lubrication;
-            fixed += hydrodynamic ? 0 : summary_.stresslet[c](0, 1);
+            using M = typename decltype(tag)::type;
+            hydrodynamic[contributionIndex(M::contribution)] = M::hydrodynamic;
+        });
+        forEachPairModelType([&](auto tag)
+        {
+            using M = typename decltype(tag)::type;
+            hydrodynamic[contributionIndex(M::contribution)] = M::hydrodynamic;
+        });
+        double fixed = 0;
+        for (std::size_t c = 0; c < hydrodynamic.size(); ++c)
+        {
+            fixed += hydrodynamic[c] ? 0 : summary_.stresslet[c](0, 1);
         }
         return ImplicitEuler::StressControl
         {

@@ -41,7 +41,7 @@ namespace
             {
                 if (h < m.gap())
                 {
-                    R += m.resistanceMatrix(g);
+                    R += Lubrication::resistanceMatrix(m.coefficients(g), g.n);
                 }
             }
         });
