@@ -206,6 +206,192 @@ void ForceField::countContact
 }
 
 
+void ForceField::clearLinearised(std::size_t nB, const Output& out)
+{
+    if (out.contacts)
+    {
+        blockLinearised_.resize(nB);
+        for (std::vector<LinearisedContact>& c : blockLinearised_)
+        {
+            c.clear();
+        }
+    }
+}
+
+
+void ForceField::nearPass
+(
+    ModelList<>,
+    const Particles& p,
+    const LeesEdwardsBox& box,
+    const PairList& near,
+    PairList*,
+    double,
+    const Output& out
+)
+{
+    // No model here: the contacts are still counted (Simulation's checks
+    // of the overlap need them)
+    const std::size_t N = p.size();
+    clearLinearised(reductionBlocks(N), out);
+    #pragma omp parallel for schedule(static) if(threaded(N))
+    for (std::size_t b = 0; b < reductionBlocks(N); ++b)
+    {
+        BlockStats& stats = blockStats_[b];
+        const BlockRange rows(b, N);
+        for (std::size_t i = rows.begin; i < rows.end; ++i)
+        {
+            for (std::uint32_t k = near.offset[i]; k < near.offset[i + 1]; ++k)
+            {
+                const std::uint32_t j = near.j[k];
+                Vec3 r = p.x[j] - p.x[i];
+                box.minimumImage(r);
+                const double R = p.a[i] + p.a[j];
+                if (r.squaredNorm() < R*R)
+                {
+                    countContact
+                    (
+                        stats, PairGeometry::make(r, p.a[i], p.a[j]),
+                        p.id[i], p.id[j]
+                    );
+                }
+            }
+        }
+    }
+    gatherBlocks(nullptr, out);
+}
+
+
+namespace
+{
+    //- What the models of a pair in range give it
+    struct PairEvaluation
+    {
+        PairForce total;                // summed over the models
+        ContactStiffness stiffness;     // of the linearisable ones
+        bool linearised = false;
+    };
+
+    //- Every model of Ms within its gap() on one pair: their sum, the
+    //  stresslet of each into S[m], and (linearise) the springs of the
+    //  linearisable ones about the state the pair keeps (the advanced one,
+    //  or the one read)
+    template<class... Ms>
+    PairEvaluation evaluatePair
+    (
+        const std::tuple<const Ms*...>& ms,
+        const PairGeometry& g,
+        const PairKinematics* kin,
+        const ContactState& old,
+        ContactState& next,
+        double dt,
+        bool perParticle,
+        bool linearise,
+        bool advanceHistory,
+        Mat3* S
+    )
+    {
+        PairEvaluation e;
+        std::size_t m = 0;
+        (
+            [&]
+            {
+                const Ms& model = *std::get<const Ms*>(ms);
+                if (g.h < model.gap())
+                {
+                    const PairForce f = evalModel(model, g, kin, old, next, dt);
+                    e.total.F += f.F;
+                    e.total.Ti += f.Ti;
+                    e.total.Tj += f.Tj;
+                    if (perParticle)
+                    {
+                        e.total.S += f.S;
+                    }
+                    S[m] += f.S;
+                    if constexpr (linearisable<Ms>)
+                    {
+                        if (linearise)
+                        {
+                            const ContactStiffness c = model.stiffness
+                            (
+                                g, *kin, advanceHistory ? next : old
+                            );
+                            e.stiffness.kn += c.kn;
+                            e.stiffness.gammaN += c.gammaN;
+                            e.stiffness.kt += c.kt;
+                            e.stiffness.kr += c.kr;
+                            e.linearised = true;
+                        }
+                    }
+                }
+                ++m;
+            }(),
+            ...
+        );
+        return e;
+    }
+}
+
+
+void ForceField::gatherBlocks(PairList* history, const Output& out)
+{
+    // The linearised contacts in block (so slot) order
+    if (out.contacts)
+    {
+        out.contacts->clear();
+        for (const std::vector<LinearisedContact>& c : blockLinearised_)
+        {
+            out.contacts->insert(out.contacts->end(), c.begin(), c.end());
+        }
+    }
+
+    // The next pool: the contacts in block (so slot) order
+    if (history)
+    {
+        pool_.clear();
+        for (const std::vector<NewContact>& contacts : blockContacts_)
+        {
+            for (const NewContact& c : contacts)
+            {
+                history->contactOf[c.slot] = static_cast<std::uint32_t>(pool_.size());
+                pool_.push_back(c.state);
+            }
+        }
+        std::swap(history->contacts, pool_);
+    }
+}
+
+
+void ForceField::secondParticles(const PairList& near, const Output& out)
+{
+    // Pass 2: the parts of j, in the transposed order of the slots
+    const std::size_t N = near.nParticles();
+    const bool perParticle = out.S != nullptr;
+    #pragma omp parallel for schedule(static) if(threaded(N))
+    for (std::size_t j = 0; j < N; ++j)
+    {
+        Vec3 F = Vec3::Zero();
+        Vec3 T = Vec3::Zero();
+        Mat3 S = Mat3::Zero();
+        near.forEachAsSecond(j, [&](std::uint32_t k)
+        {
+            if (slotOn_[k])
+            {
+                F += slotForce_[k].F;
+                T += slotForce_[k].T;
+                if (perParticle)
+                {
+                    S += slotS_[k];
+                }
+            }
+        });
+        if (out.F) (*out.F)[j] += F;
+        if (out.T) (*out.T)[j] += T;
+        if (perParticle) (*out.S)[j] += S;
+    }
+}
+
+
 template<class... Ms>
 void ForceField::nearPass
 (
@@ -228,177 +414,88 @@ void ForceField::nearPass
         ((!linearisable<Ms> || Ms::usesVelocities) && ...),
         "a model with stiffness() is linearised about the velocities"
     );
-    if constexpr (sizeof...(Ms) == 0)
+    const std::size_t N = p.size();
+    const std::size_t nB = reductionBlocks(N);
+    clearLinearised(nB, out);
+    const std::size_t nC = contributionNames().size();
+    const std::tuple<const Ms*...> ms(models_.get<Ms>()...);
+    const int contribution[] = {contributionIndex(Ms::contribution)...};
+    const double maxGap = std::max({std::get<const Ms*>(ms)->gap()...});
+    const double imageVelocity = box.imageVelocity();
+    const bool perParticle = out.S != nullptr;
+    const bool readHistory = anyHistory<Ms...> && !near.contactOf.empty();
+    const bool advanceHistory = anyHistory<Ms...> && history;
+    if (advanceHistory && near.contactOf.size() != near.nPairs())
     {
-        // No model here: the contacts are still counted (Simulation's
-        // checks of the overlap need them)
-        const std::size_t N = p.size();
-        if (out.contacts)
-        {
-            out.contacts->clear();
-        }
-        #pragma omp parallel for schedule(static) if(threaded(N))
-        for (std::size_t b = 0; b < reductionBlocks(N); ++b)
-        {
-            BlockStats& stats = blockStats_[b];
-            const BlockRange rows(b, N);
-            for (std::size_t i = rows.begin; i < rows.end; ++i)
-            {
-                for (std::uint32_t k = near.offset[i]; k < near.offset[i + 1]; ++k)
-                {
-                    const std::uint32_t j = near.j[k];
-                    Vec3 r = p.x[j] - p.x[i];
-                    box.minimumImage(r);
-                    const double R = p.a[i] + p.a[j];
-                    if (r.squaredNorm() < R*R)
-                    {
-                        countContact
-                        (
-                            stats, PairGeometry::make(r, p.a[i], p.a[j]),
-                            p.id[i], p.id[j]
-                        );
-                    }
-                }
-            }
-        }
+        throw std::logic_error
+        (
+            "ForceField: the near list carries no contact history"
+            " (PairList::clearHistory)"
+        );
     }
-    else
+    if (advanceHistory)
     {
-        const std::size_t N = p.size();
-        const std::size_t nC = contributionNames().size();
-        const std::tuple<const Ms*...> ms(models_.get<Ms>()...);
-        const int contribution[] = {contributionIndex(Ms::contribution)...};
-        const double maxGap = std::max({std::get<const Ms*>(ms)->gap()...});
-        const double imageVelocity = box.imageVelocity();
-        const bool perParticle = out.S != nullptr;
-        const bool readHistory = anyHistory<Ms...> && !near.contactOf.empty();
-        const bool advanceHistory = anyHistory<Ms...> && history;
-        if (advanceHistory && near.contactOf.size() != near.nPairs())
+        blockContacts_.resize(nB);
+    }
+    const bool linearise = (linearisable<Ms> || ...) && out.contacts;
+    slotForce_.resize(near.nPairs());
+    slotOn_.resize(near.nPairs());
+    slotS_.resize(perParticle ? near.nPairs() : 0);
+
+    // Pass 1: the rows of i; the parts of j wait in the slots
+    #pragma omp parallel for schedule(static) if(threaded(N))
+    for (std::size_t b = 0; b < nB; ++b)
+    {
+        Mat3 S[sizeof...(Ms)];
+        for (Mat3& s : S)
         {
-            throw std::logic_error
-            (
-                "ForceField: the near list carries no contact history"
-                " (PairList::clearHistory)"
-            );
+            s.setZero();
         }
+        BlockStats& stats = blockStats_[b];
         if (advanceHistory)
         {
-            blockContacts_.resize(reductionBlocks(N));
+            blockContacts_[b].clear();
         }
-        const bool linearise = (linearisable<Ms> || ...) && out.contacts;
-        if (linearise)
+        const BlockRange rows(b, N);
+        for (std::size_t i = rows.begin; i < rows.end; ++i)
         {
-            blockLinearised_.resize(reductionBlocks(N));
-        }
+            Vec3 Fi = Vec3::Zero();
+            Vec3 Ti = Vec3::Zero();
+            Mat3 Si = Mat3::Zero();
+            for (std::uint32_t k = near.offset[i]; k < near.offset[i + 1]; ++k)
+            {
+                const std::uint32_t j = near.j[k];
 
-        slotForce_.resize(near.nPairs());
-        slotOn_.resize(near.nPairs());
-        slotS_.resize(perParticle ? near.nPairs() : 0);
-
-        // Pass 1: the rows of i; the parts of j wait in the slots
-        #pragma omp parallel for schedule(static) if(threaded(N))
-        for (std::size_t b = 0; b < reductionBlocks(N); ++b)
-        {
-            Mat3 S[sizeof...(Ms)];
-            for (Mat3& s : S)
-            {
-                s.setZero();
-            }
-            BlockStats& stats = blockStats_[b];
-            if (advanceHistory)
-            {
-                blockContacts_[b].clear();
-            }
-            if (linearise)
-            {
-                blockLinearised_[b].clear();
-            }
-            const BlockRange rows(b, N);
-            for (std::size_t i = rows.begin; i < rows.end; ++i)
-            {
-                Vec3 Fi = Vec3::Zero();
-                Vec3 Ti = Vec3::Zero();
-                Mat3 Si = Mat3::Zero();
-                for (std::uint32_t k = near.offset[i]; k < near.offset[i + 1]; ++k)
+                // Minimum image of x_j, and one test before anything else
+                Vec3 r = p.x[j] - p.x[i];
+                const int image = box.minimumImage(r);
+                const double R = p.a[i] + p.a[j] + maxGap;
+                if (!(r.squaredNorm() < R*R))
                 {
-                    const std::uint32_t j = near.j[k];
-
-                    // Minimum image of x_j, and one test before anything else
-                    Vec3 r = p.x[j] - p.x[i];
-                    const int image = box.minimumImage(r);
-                    const double R = p.a[i] + p.a[j] + maxGap;
-                    if (!(r.squaredNorm() < R*R))
+                    if (advanceHistory && near.contactOf[k] != PairList::noContact)
                     {
-                        if (advanceHistory && near.contactOf[k] != PairList::noContact)
-                        {
-                            // eq. (5): a pair out of contact has no stretch
-                            history->contactOf[k] = PairList::noContact;
-                        }
-                        slotOn_[k] = 0;
-                        continue;
+                        // eq. (5): a pair out of contact has no stretch
+                        history->contactOf[k] = PairList::noContact;
                     }
+                    slotOn_[k] = 0;
+                    continue;
+                }
 
-                    const PairGeometry g = PairGeometry::make(r, p.a[i], p.a[j]);
+                const PairGeometry g = PairGeometry::make(r, p.a[i], p.a[j]);
 
-                    // The image moves faster by m gammaDot Ly, and so does
-                    // U_inf there: relative velocities unchanged
-                    const Vec3 jump = image*imageVelocity*Vec3::UnitX();
-                    const Vec3 du = p.u[j] + jump - p.u[i];
-                    if (g.h < 0)
-                    {
-                        countContact(stats, g, p.id[i], p.id[j]);
-                    }
+                // The image moves faster by m gammaDot Ly, and so does
+                // U_inf there: relative velocities unchanged
+                const Vec3 jump = image*imageVelocity*Vec3::UnitX();
+                const Vec3 du = p.u[j] + jump - p.u[i];
+                if (g.h < 0)
+                {
+                    countContact(stats, g, p.id[i], p.id[j]);
+                }
 
-                    PairForce total;
-                    ContactState next;
-                    const ContactState& old =
-                        readHistory ? near.history(k) : next;
-                    ContactStiffness stiffness;
-                    bool linearised = false;
-                    auto applyModels = [&](const PairKinematics* kin)
-                    {
-                        std::size_t m = 0;
-                        (
-                            [&]
-                            {
-                                const Ms& model = *std::get<const Ms*>(ms);
-                                if (g.h < model.gap())
-                                {
-                                    const PairForce f =
-                                        evalModel(model, g, kin, old, next, dt);
-                                    total.F += f.F;
-                                    total.Ti += f.Ti;
-                                    total.Tj += f.Tj;
-                                    if (perParticle)
-                                    {
-                                        total.S += f.S;
-                                    }
-                                    S[m] += f.S;
-                                    if constexpr (linearisable<Ms>)
-                                    {
-                                        // About the state the pair keeps:
-                                        // the advanced one, or the one read
-                                        if (linearise)
-                                        {
-                                            const ContactStiffness c =
-                                                model.stiffness
-                                                (
-                                                    g, *kin,
-                                                    advanceHistory ? next : old
-                                                );
-                                            stiffness.kn += c.kn;
-                                            stiffness.gammaN += c.gammaN;
-                                            stiffness.kt += c.kt;
-                                            stiffness.kr += c.kr;
-                                            linearised = true;
-                                        }
-                                    }
-                                }
-                                ++m;
-                            }(),
-                            ...
-                        );
-                    };
+                ContactState next;
+                const ContactState& old = readHistory ? near.history(k) : next;
+                const PairEvaluation e = [&]
+                {
                     if constexpr (anyVelocities<Ms...>)
                     {
                         const PairKinematics kin
@@ -406,110 +503,65 @@ void ForceField::nearPass
                             uRel_[i], uRel_[j], wRel_[i], wRel_[j], du,
                             p.omega[i], p.omega[j], E_[i], E_[j]
                         };
-                        applyModels(&kin);
+                        return evaluatePair
+                        (
+                            ms, g, &kin, old, next, dt, perParticle,
+                            linearise, advanceHistory, S
+                        );
                     }
                     else
                     {
-                        applyModels(nullptr);
+                        return evaluatePair
+                        (
+                            ms, g, nullptr, old, next, dt, perParticle,
+                            linearise, advanceHistory, S
+                        );
                     }
-                    if (linearised)
-                    {
-                        blockLinearised_[b].push_back
-                        ({
-                            static_cast<std::uint32_t>(i), j, g.n, g.ai, g.aj,
-                            ambient_[j].U + jump - ambient_[i].U, r.y(), stiffness
-                        });
-                    }
-                    if (advanceHistory)
-                    {
-                        // The state after the step joins the next pool;
-                        // a slot that leaves contact has none
-                        if (near.contactOf[k] != PairList::noContact)
-                        {
-                            history->contactOf[k] = PairList::noContact;
-                        }
-                        if (next.active())
-                        {
-                            blockContacts_[b].push_back({k, next});
-                        }
-                    }
-
-                    // Newton's third law: j receives -F (eqs. 4c, 6b, 7b)
-                    Fi += total.F;
-                    Ti += total.Ti;
-                    slotForce_[k] = SlotForce{-total.F, total.Tj};
-                    if (perParticle)
-                    {
-                        Si += 0.5*total.S;
-                        slotS_[k] = 0.5*total.S;
-                    }
-                    slotOn_[k] = 1;
-                }
-                if (out.F) (*out.F)[i] += Fi;
-                if (out.T) (*out.T)[i] += Ti;
-                if (perParticle) (*out.S)[i] += Si;
-            }
-            for (std::size_t m = 0; m < sizeof...(Ms); ++m)
-            {
-                blockS_[b*nC + contribution[m]] += S[m];
-            }
-        }
-
-        // The linearised contacts in block (so slot) order
-        if (linearise)
-        {
-            out.contacts->clear();
-            for (const std::vector<LinearisedContact>& c : blockLinearised_)
-            {
-                out.contacts->insert(out.contacts->end(), c.begin(), c.end());
-            }
-        }
-        else if (out.contacts)
-        {
-            out.contacts->clear();
-        }
-
-        // The next pool: the contacts in block (so slot) order
-        if (advanceHistory)
-        {
-            pool_.clear();
-            for (const std::vector<NewContact>& contacts : blockContacts_)
-            {
-                for (const NewContact& c : contacts)
+                }();
+                if (e.linearised)
                 {
-                    history->contactOf[c.slot] =
-                        static_cast<std::uint32_t>(pool_.size());
-                    pool_.push_back(c.state);
+                    blockLinearised_[b].push_back
+                    ({
+                        static_cast<std::uint32_t>(i), j, g.n, g.ai, g.aj,
+                        ambient_[j].U + jump - ambient_[i].U, r.y(), e.stiffness
+                    });
                 }
-            }
-            std::swap(history->contacts, pool_);
-        }
-
-        // Pass 2: the parts of j, in the transposed order of the slots
-        #pragma omp parallel for schedule(static) if(threaded(N))
-        for (std::size_t j = 0; j < N; ++j)
-        {
-            Vec3 F = Vec3::Zero();
-            Vec3 T = Vec3::Zero();
-            Mat3 S = Mat3::Zero();
-            for (std::uint32_t t = near.offsetT[j]; t < near.offsetT[j + 1]; ++t)
-            {
-                const std::uint32_t k = near.slotT[t];
-                if (slotOn_[k])
+                if (advanceHistory)
                 {
-                    F += slotForce_[k].F;
-                    T += slotForce_[k].T;
-                    if (perParticle)
+                    // The state after the step joins the next pool; a slot
+                    // that leaves contact has none
+                    if (near.contactOf[k] != PairList::noContact)
                     {
-                        S += slotS_[k];
+                        history->contactOf[k] = PairList::noContact;
+                    }
+                    if (next.active())
+                    {
+                        blockContacts_[b].push_back({k, next});
                     }
                 }
+
+                // Newton's third law: j receives -F (eqs. 4c, 6b, 7b)
+                Fi += e.total.F;
+                Ti += e.total.Ti;
+                slotForce_[k] = SlotForce{-e.total.F, e.total.Tj};
+                if (perParticle)
+                {
+                    Si += 0.5*e.total.S;
+                    slotS_[k] = 0.5*e.total.S;
+                }
+                slotOn_[k] = 1;
             }
-            if (out.F) (*out.F)[j] += F;
-            if (out.T) (*out.T)[j] += T;
-            if (perParticle) (*out.S)[j] += S;
+            if (out.F) (*out.F)[i] += Fi;
+            if (out.T) (*out.T)[i] += Ti;
+            if (perParticle) (*out.S)[i] += Si;
+        }
+        for (std::size_t m = 0; m < sizeof...(Ms); ++m)
+        {
+            blockS_[b*nC + contribution[m]] += S[m];
         }
     }
+    gatherBlocks(advanceHistory ? history : nullptr, out);
+    secondParticles(near, out);
 }
 
 

@@ -154,10 +154,7 @@ namespace
             for (std::size_t j = 0; j < N; ++j)
             {
                 Vec3 Fj = Vec3::Zero();
-                for (std::size_t t = list.offsetT[j]; t < list.offsetT[j + 1]; ++t)
-                {
-                    Fj += slotF[list.slotT[t]];
-                }
+                list.forEachAsSecond(j, [&](std::uint32_t k) { Fj += slotF[k]; });
                 p.F[j] += Fj;
             }
         }
