@@ -25,11 +25,7 @@ csv=$here/implicit-memory.csv
 this=$(git -C "$WSF_PROJECT_DIR" rev-parse --short HEAD)
 git -C "$WSF_PROJECT_DIR" diff --quiet HEAD -- src || this=$this+changes
 
-if [ ! -f "$csv" ]; then
-    printf 'engine,repeat,cpu_s,wall_s,time_v_max_rss_MB,' > "$csv"
-    "$new" -header >> "$csv"
-fi
-rows=$(($(wc -l < "$csv") + 1))
+rows=$(startCsv "$csv" engine,repeat,cpu_s,wall_s,time_v_max_rss_MB, "$new" -header)
 args="-case table3 -N 65536 -steps 3 -attractionCutoff 4 -integrator implicitEuler"
 for r in $(seq "$repeats"); do
     timedBenchmark "$csv" "$this" "$new" "$r" 1 $args > /dev/null

@@ -6,6 +6,10 @@
 # a fresh copy of the case holding only the start time.
 #
 #   docs/performance/solver-pair.sh CASE START END [REPEATS] [REFERENCE]
+#   docs/performance/solver-pair.sh --threads CASE START END [REPEATS]
+#
+# --threads  pairs this tree on one thread against this tree on two (the
+#            second labelled <commit>/2threads) instead of two trees
 #
 # CASE       a case with a write at START (e.g. sheared from its packing)
 # START END  the window: startFrom latestTime at START, endTime END, one
@@ -23,6 +27,8 @@
 #------------------------------------------------------------------------------
 set -eu
 root=$(cd "${0%/*}/../.." && pwd)
+threadsMode=false
+if [ "${1:-}" = --threads ]; then threadsMode=true; shift; fi
 case=$(cd "$1" && pwd); start=$2; end=$3; repeats=${4:-5}
 reference=${5:-/tmp/mainhome:/tmp/wsf-main}
 refHome=${reference%%:*}; refTree=${reference#*:}
@@ -31,10 +37,10 @@ work=$(mktemp -d)
 [ -f "$csv" ] || echo "commit,repeat,N,start,end,cpu_s,wall_s,maxrss_kB,steps,ns_per_particle_step,hydrodynamics_ns,pairLoop_ns,cg_iterations,etaR" > "$csv"
 [ -d "$case/$start" ] || { echo "solver-pair.sh: no time $start in $case" >&2; exit 1; }
 
-# run <label> <home> <tree> <repeat>
+# run <label> <home> <tree> <repeat> [threads]
 run()
 {
-    local label=$1 home=$2 tree=$3 r=$4 c=$work/case
+    local label=$1 home=$2 tree=$3 r=$4 threads=${5:-1} c=$work/case
     rm -rf "$c"; mkdir -p "$c"
     cp -r "$case/constant" "$case/system" "$case/$start" "$c"
     (
@@ -48,7 +54,7 @@ run()
         setEntry system/controlDict endTime "$end"
         setEntry system/controlDict writeControl runTime
         setEntry system/controlDict writeInterval "$end"
-        OMP_NUM_THREADS=1 OMP_WAIT_POLICY=PASSIVE /usr/bin/time -v \
+        OMP_NUM_THREADS=$threads OMP_WAIT_POLICY=PASSIVE /usr/bin/time -v \
             wavyShearFoam > log.wavyShearFoam 2> log.time
     ) || { echo "solver-pair.sh: $label failed, see $c" >&2; exit 1; }
     local dat=$c/postProcessing/rheology/$start/rheology.dat
@@ -74,9 +80,12 @@ run()
 
 this=$(git -C "$root" rev-parse --short HEAD)
 git -C "$root" diff --quiet HEAD -- src || this=$this+changes
-other=$(git -C "$refTree" rev-parse --short HEAD)
 for r in $(seq "$repeats"); do
     run "$this" "$HOME" "$root" "$r"
-    run "$other" "$refHome" "$refTree" "$r"
+    if $threadsMode; then
+        run "$this/2threads" "$HOME" "$root" "$r" 2
+    else
+        run "$(git -C "$refTree" rev-parse --short HEAD)" "$refHome" "$refTree" "$r"
+    fi
 done
 rm -rf "$work"

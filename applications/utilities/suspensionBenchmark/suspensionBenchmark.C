@@ -21,6 +21,27 @@ Description
     restore); contacts_per_particle then counts the contacts of the
     sheared state, and peak_rss_MB includes the shearing.
 
+    -roofline (an implicit integrator) prints instead a row of its own
+    (header with -roofline -header): after the timed steps, the time of
+    the implicit operator's product y = A x and of one CG iteration
+    (HydrodynamicResistance, ConjugateGradient; the difference of 30 and
+    10 iterations, over 20) per particle, each the shortest of its
+    repeats (STREAM's rule, as for the bandwidths), the bytes they move per
+    particle and their flops, and the bandwidth of this machine on the
+    same threads: a STREAM-like triad a = b + s c (24 bytes an entry, as
+    STREAM counts) and a read-only sum over arrays of 128 MB, well
+    beyond the caches. Bytes: each array the kernel streams, once, as the
+    operator's (its per-particle and per-entry data; operator_MB in all)
+    and the vectors' (those it reads, and twice what it writes: read for
+    ownership, or read in place, then written back; vectors_MB for the
+    five of the CG), since one may fit in the last-level cache and the
+    other not; the partners' x_j, which the spatial order mostly finds in
+    cache, as a separate upper bound (48 bytes an entry). Flops: counted from the
+    kernels (HydrodynamicResistance.C, ConjugateGradient.H): 67 per
+    coupling, 78 per particle for the drag and the self block, 60 per
+    contact entry; 150 per particle for the vector updates, the
+    preconditioner and the dot products of an iteration.
+
     Cases (paper tables, all in reduced units a0 = eta0 = gammaDot = 1):
       table3  bidisperse a2/a1 = 3, V2/V1 = 0.25, phi = 0.5; St = 1e-3,
               k = 4e5, kt/kn = 2/7, gamma_n/kn = 1e-7, mu_C = 1, rolling
@@ -36,7 +57,7 @@ Usage
         [-criticalLoad 0.1] [-writePacking DIR]
         [-integrator velocityVerlet|implicitEuler|overdamped]
         [-off lubrication|contact|rolling|repulsion|attraction]...
-        [-preshear 1]
+        [-preshear 1] [-roofline]
 
     Threads: OMP_NUM_THREADS. The particles start from a random
     non-overlapping packing; a few steps are taken before timing.
@@ -76,9 +97,9 @@ namespace
         return std::chrono::duration<double>(b - a).count();
     }
 
-    //- Median wall time of `repeats` calls of f
+    //- The wall times of `repeats` calls of f, sorted
     template<class F>
-    double medianTime(int repeats, F f)
+    std::vector<double> sortedTimes(int repeats, F f)
     {
         std::vector<double> t;
         for (int r = 0; r < repeats; ++r)
@@ -88,7 +109,23 @@ namespace
             t.push_back(seconds(t0, Clock::now()));
         }
         std::sort(t.begin(), t.end());
+        return t;
+    }
+
+    //- Median wall time of `repeats` calls of f
+    template<class F>
+    double medianTime(int repeats, F f)
+    {
+        const std::vector<double> t = sortedTimes(repeats, f);
         return t[t.size()/2];
+    }
+
+    //- Shortest wall time of `repeats` calls of f: what a kernel bound by
+    //  bandwidth can reach on a machine shared with others (STREAM's rule)
+    template<class F>
+    double bestTime(int repeats, F f)
+    {
+        return sortedTimes(repeats, f).front();
     }
 
     double peakRSSMB()
@@ -112,6 +149,7 @@ namespace
         std::string packingDir;
         bool brute = false;
         bool header = false;
+        bool roofline = false;
         std::uint64_t seed = 1;
         Integrator integrator = Integrator::velocityVerlet;
         std::string integratorName = "velocityVerlet";
@@ -198,6 +236,7 @@ namespace
             }
             else if (a == "-brute") o.brute = true;
             else if (a == "-header") o.header = true;
+            else if (a == "-roofline") o.roofline = true;
             else
             {
                 std::cerr << "suspensionBenchmark: unknown option " << a << "\n";
@@ -281,6 +320,123 @@ namespace
         }
     }
 
+    //- STREAM-like bandwidths of this machine on the current threads, GB/s
+    struct Bandwidth
+    {
+        double triad;       // a = b + s c: 24 bytes an entry
+        double read;        // sum of b: 8 bytes an entry
+    };
+
+    Bandwidth bandwidth()
+    {
+        const std::size_t n = std::size_t(1) << 24;
+        const int repeats = 10;
+        std::vector<double> a(n), b(n), c(n);
+        #pragma omp parallel for schedule(static)
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            a[i] = 0;
+            b[i] = 1;
+            c[i] = 2;
+        }
+        const double tTriad = bestTime(repeats, [&]()
+        {
+            #pragma omp parallel for schedule(static)
+            for (std::size_t i = 0; i < n; ++i)
+            {
+                a[i] = b[i] + 3*c[i];
+            }
+        });
+        // Eight entries a step into the sum, so that the latency of its
+        // adds does not bound the loop
+        double total = 0;
+        const double tRead = bestTime(repeats, [&]()
+        {
+            double sum = 0;
+            #pragma omp parallel for schedule(static) reduction(+:sum)
+            for (std::size_t i = 0; i < n; i += 8)
+            {
+                double s[8];
+                for (int k = 0; k < 8; ++k)
+                {
+                    s[k] = b[i + k];
+                }
+                sum += ((s[0] + s[1]) + (s[2] + s[3])) + ((s[4] + s[5]) + (s[6] + s[7]));
+            }
+            total += sum;
+        });
+        if (total != repeats*double(n) || a[n - 1] != 7)
+        {
+            std::cerr << "suspensionBenchmark: the bandwidth loops computed wrong sums\n";
+            std::exit(1);
+        }
+        return {24e-9*n/tTriad, 8e-9*n/tRead};
+    }
+
+    //- The -roofline row (Description) of the operator of sim
+    void roofline(const Options& o, const Simulation& sim)
+    {
+        using Resistance = HydrodynamicResistance;
+        const Resistance& R = sim.implicit()->resistance();
+        const std::size_t N = sim.particles().size();
+        const double entries = 2.0*R.nPairs()/N;       // row entries of
+        const double contacts = 2.0*R.nContacts()/N;   // each kind
+        const double vector = 6*sizeof(double);
+
+        // The operator's data per particle: the product's (the drag and
+        // M/dt, the self block, the row offsets, the row entries), then
+        // the preconditioner's inverse block
+        const double productOperator =
+            2*sizeof(double) + sizeof(Resistance::SelfBlock) + 2*sizeof(std::uint32_t)
+          + entries*(sizeof(Resistance::Coupling) + sizeof(std::uint32_t))
+          + contacts*(sizeof(Resistance::Contact) + 2*sizeof(std::uint32_t));
+        const double iterationOperator = productOperator + 21*sizeof(float);
+
+        // Vectors per particle: the product reads x and writes y; an
+        // iteration adds p.Ap (p, Ap), the fused pass (x, r in and out, z
+        // out, p, Ap in) and the direction (z in, p in and out)
+        const double productVectors = 3*vector;
+        const double iterationVectors = productVectors + 2*vector + 8*vector + 3*vector;
+        const double gather = (entries + contacts)*vector;
+        const double productFlops = 78 + 67*entries + 60*contacts;
+        const double iterationFlops = productFlops + 150;
+
+        const Eigen::VectorXd x = Eigen::VectorXd::Random(6*N);
+        Eigen::VectorXd y;
+        const double tProduct = bestTime(21, [&]() { R.apply(x, y); });
+        auto solve = [&](std::size_t iterations)
+        {
+            ConjugateGradient cg({1e-300, iterations});
+            return bestTime(5, [&]()
+            {
+                Eigen::VectorXd v = Eigen::VectorXd::Zero(6*N);
+                const ConjugateGradient::Result r = cg.solve(R, x, v);
+                if (r.iterations != iterations)
+                {
+                    std::cerr << "suspensionBenchmark: the CG stopped after "
+                        << r.iterations << " of " << iterations << " iterations\n";
+                    std::exit(1);
+                }
+            });
+        };
+        const double tIteration = (solve(30) - solve(10))/20;
+
+        const Bandwidth bw = bandwidth();
+        const double ns = 1e9/N;
+        std::printf
+        (
+            "%s,%s,%zu,%d,%.3f,%.3f,%.1f,%.1f,"
+            "%.2f,%.0f,%.0f,%.0f,%.0f,%.2f,%.0f,%.0f,%.0f,%.2f,%.2f,%.2f,%.2f\n",
+            o.caseName.c_str(), o.integratorName.c_str(), N, omp_get_max_threads(),
+            entries, contacts, 1e-6*N*iterationOperator, 1e-6*N*5*vector,
+            tProduct*ns, productOperator, productVectors, gather, productFlops,
+            tIteration*ns, iterationOperator, iterationVectors, iterationFlops,
+            (productOperator + productVectors)/(tProduct*ns),
+            (iterationOperator + iterationVectors)/(tIteration*ns),
+            bw.triad, bw.read
+        );
+    }
+
     std::string joined(const std::vector<std::string>& names)
     {
         std::string s;
@@ -299,6 +455,21 @@ int main(int argc, char** argv)
     const bool t3 = o.caseName == "table3";
     const double rho = 1e-3;
 
+    if (o.header && o.roofline)
+    {
+        std::cout
+            << "case,integrator,N,threads,entries_per_particle,contact_entries_per_particle,"
+               "operator_MB,vectors_MB,product_ns,product_operator_bytes,"
+               "product_vector_bytes,gather_bytes,product_flops,iteration_ns,"
+               "iteration_operator_bytes,iteration_vector_bytes,iteration_flops,"
+               "product_GBs,iteration_GBs,triad_GBs,read_GBs\n";
+        return 0;
+    }
+    if (o.roofline && o.integrator == Integrator::velocityVerlet)
+    {
+        std::cerr << "suspensionBenchmark: -roofline needs an implicit integrator\n";
+        return 2;
+    }
     if (o.header)
     {
         std::cout
@@ -334,23 +505,33 @@ int main(int argc, char** argv)
     Simulation::Params sp;
     sp.rho = rho;
     sp.integrator = o.integrator;
-    Simulation sim(packed.particles, box, flow, forceModels, sp);
-    sim.start(0);
+    Simulation::Checkpoint sheared;
     if (o.preshear > 0)
     {
-        Simulation::Checkpoint sheared;
-        {
-            Simulation::Params implicitParams = sp;
-            implicitParams.integrator = Integrator::implicitEuler;
-            Simulation shearing
-            (
-                std::move(packed.particles), box, flow, forceModels, implicitParams
-            );
-            shearing.start(0);
-            shearing.advance(o.preshear/flow.meanShearRate(0, 1));
-            shearing.checkpoint(sheared);
-        }
+        Simulation::Params implicitParams = sp;
+        implicitParams.integrator = Integrator::implicitEuler;
+        Simulation shearing
+        (
+            std::move(packed.particles), box, flow, forceModels, implicitParams
+        );
+        shearing.start(0);
+        shearing.advance(o.preshear/flow.meanShearRate(0, 1));
+        shearing.checkpoint(sheared);
+    }
+    Simulation sim
+    (
+        o.preshear > 0 ? sheared.particles : std::move(packed.particles),
+        box, flow, forceModels, sp
+    );
+    if (o.preshear > 0)
+    {
+        // Its positions fit the box's offset at that strain only
         sim.restore(sheared);
+        sheared = Simulation::Checkpoint();
+    }
+    else
+    {
+        sim.start(0);
     }
     const double dt = sim.deltaT();
     for (int s = 0; s < 5; ++s)
@@ -372,6 +553,11 @@ int main(int argc, char** argv)
         {
             cgIterations += double(sim.implicit()->statistics().iterations)/o.steps;
         }
+    }
+    if (o.roofline)
+    {
+        roofline(o, sim);
+        return 0;
     }
     const std::size_t rebuilds = sim.search().statistics().builds - buildsBefore;
     std::sort(stepTimes.begin(), stepTimes.end());

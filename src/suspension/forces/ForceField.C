@@ -219,19 +219,14 @@ void ForceField::clearLinearised(std::size_t nB, const Output& out)
 }
 
 
-void ForceField::nearPass
+void ForceField::countContacts
 (
-    ModelList<>,
     const Particles& p,
     const LeesEdwardsBox& box,
     const PairList& near,
-    PairList*,
-    double,
     const Output& out
 )
 {
-    // No model here: the contacts are still counted (Simulation's checks
-    // of the overlap need them)
     const std::size_t N = p.size();
     clearLinearised(reductionBlocks(N), out);
     #pragma omp parallel for schedule(static) if(threaded(N))
@@ -752,7 +747,16 @@ ForceSummary ForceField::run
         }
         dispatch(mask & ~farMask_, [&](auto models)
         {
-            nearPass(models, p, box, near, history, dt, out);
+            if constexpr (std::is_same_v<decltype(models), ModelList<>>)
+            {
+                // No model here: the contacts are still counted
+                // (Simulation's checks of the overlap need them)
+                countContacts(p, box, near, out);
+            }
+            else
+            {
+                nearPass(models, p, box, near, history, dt, out);
+            }
         });
         dispatch(mask & farMask_, [&](auto models)
         {
