@@ -360,17 +360,7 @@ std::string Simulation::takeStep(double dt)
     double rate;
     auto stressControl = [&](double target)
     {
-        std::vector<bool> hydrodynamic(summary_.stresslet.size(), false);
-        forEachParticleModelType([&](auto tag)
-        {
-            using M = typename decltype(tag)::type;
-            hydrodynamic[contributionIndex(M::contribution)] = M::hydrodynamic;
-        });
-        forEachPairModelType([&](auto tag)
-        {
-            using M = typename decltype(tag)::type;
-            hydrodynamic[contributionIndex(M::contribution)] = M::hydrodynamic;
-        });
+        const std::vector<bool>& hydrodynamic = hydrodynamicContributions();
         double fixed = 0;
         for (std::size_t c = 0; c < hydrodynamic.size(); ++c)
         {

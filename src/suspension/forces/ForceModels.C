@@ -26,6 +26,24 @@ const std::vector<std::string>& contributionNames()
 }
 
 
+const std::vector<bool>& hydrodynamicContributions()
+{
+    static const std::vector<bool> hydrodynamic = []
+    {
+        std::vector<bool> h(contributionNames().size(), false);
+        auto mark = [&](auto tag)
+        {
+            using M = typename decltype(tag)::type;
+            h[contributionIndex(M::contribution)] = M::hydrodynamic;
+        };
+        forEachParticleModelType(mark);
+        forEachPairModelType(mark);
+        return h;
+    }();
+    return hydrodynamic;
+}
+
+
 int contributionIndex(const char* name)
 {
     const std::vector<std::string>& names = contributionNames();
