@@ -3,6 +3,7 @@
 #include "flow/ShearFlow.H"
 #include "search/NeighbourSearch.H"
 #include "core/Parallel.H"
+#include "core/Scratch.H"
 
 #include <gtest/gtest.h>
 
@@ -789,4 +790,28 @@ TEST(NeighbourSearch, HistoryMemoryFollowsContactsNotSlots)
 
     // The search: cell offsets and a path length per particle
     EXPECT_GE(search.bytes(), p.size()*sizeof(double));
+}
+
+
+TEST(Scratch, GrowsByAnEighthWithoutCopyingAndNeverDoubles)
+{
+    // A first array is taken to size; one that grows past its capacity
+    // takes an eighth more room (std::vector::resize would double it, and
+    // copy the old elements while both are held); within the capacity the
+    // storage stays where it is
+    std::vector<double> v;
+    resizeScratch(v, 1000);
+    EXPECT_EQ(v.size(), 1000u);
+    EXPECT_EQ(v.capacity(), 1000u);
+
+    resizeScratch(v, 1010);
+    EXPECT_EQ(v.size(), 1010u);
+    EXPECT_EQ(v.capacity(), 1010u + 1010u/8);
+
+    const double* storage = v.data();
+    resizeScratch(v, 1100);
+    resizeScratch(v, 500);
+    EXPECT_EQ(v.data(), storage);
+    EXPECT_EQ(v.size(), 500u);
+    EXPECT_EQ(v.capacity(), 1010u + 1010u/8);
 }

@@ -102,6 +102,7 @@ Usage
 
 #include "fvCFD.H"
 #include "suspensionCloud.H"
+#include "core/Memory.H"
 #include "meshField.H"
 #include "bodyForce.H"
 #include "coarseGraining.H"
@@ -282,6 +283,7 @@ dimensioned<Type> mean(const GeometricField<Type, fvPatchField, volMesh>& f)
 
 int main(int argc, char *argv[])
 {
+    suspension::useSystemForLargeArrays();
     argList::addNote
     (
         "Dense suspension of rigid spheres in a mean flow that answers the"

@@ -48,11 +48,13 @@ Description
 
 #include "fvCFD.H"
 #include "suspensionCloud.H"
+#include "core/Memory.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
 int main(int argc, char *argv[])
 {
+    suspension::useSystemForLargeArrays();
     argList::addNote
     (
         "Rheology of a dense suspension of rigid spheres in a uniform or"

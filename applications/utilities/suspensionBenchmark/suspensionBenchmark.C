@@ -68,6 +68,7 @@ Usage
     DIR/positions.dat (x y z per line), for other codes to start from.
 \*---------------------------------------------------------------------------*/
 
+#include "core/Memory.H"
 #include "dynamics/Simulation.H"
 #include "flow/ShearFlow.H"
 #include "forces/ElectroChemicalScales.H"
@@ -384,11 +385,13 @@ namespace
         const double vector = 6*sizeof(double);
 
         // The operator's data per particle: the product's (the drag and
-        // M/dt, the self block, the row offsets, the row entries), then
-        // the preconditioner's inverse block
+        // M/dt, the self block, the row offsets, the row entries with
+        // their partner and slot, one coupling per pair: the row of the
+        // pair's other particle reads it again, counted once), then the
+        // preconditioner's inverse block
         const double productOperator =
             2*sizeof(double) + sizeof(Resistance::SelfBlock) + 2*sizeof(std::uint32_t)
-          + entries*(sizeof(Resistance::Coupling) + sizeof(std::uint32_t))
+          + entries*(2*sizeof(std::uint32_t) + 0.5*sizeof(Resistance::Coupling))
           + contacts*(sizeof(Resistance::Contact) + 2*sizeof(std::uint32_t));
         const double iterationOperator = productOperator + 21*sizeof(float);
 
@@ -451,6 +454,7 @@ namespace
 
 int main(int argc, char** argv)
 {
+    suspension::useSystemForLargeArrays();
     const Options o = parse(argc, argv);
     const bool t3 = o.caseName == "table3";
     const double rho = 1e-3;

@@ -1,4 +1,5 @@
 #include "dynamics/HydrodynamicResistance.H"
+#include "core/Scratch.H"
 #include "dynamics/SimulationError.H"
 
 #include <Eigen/Cholesky>
@@ -290,7 +291,7 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
     // The minimum-image r of each slot of the list, computed once: NaN
     // for a slot out of the range of every hydrodynamic pair model; the
     // count of each first particle
-    separation_.resize(pairs.nPairs());
+    resizeScratch(separation_, pairs.nPairs());
     first_.assign(N + 1, 0);
     #pragma omp parallel for schedule(static) if(threaded(N))
     for (std::size_t i = 0; i < N; ++i)
@@ -313,7 +314,7 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
         first_[i + 1] += first_[i];
     }
     const std::size_t nPairs = first_[N];
-    partner_.resize(nPairs);
+    resizeScratch(partner_, nPairs);
     #pragma omp parallel for schedule(static) if(threaded(N))
     for (std::size_t i = 0; i < N; ++i)
     {
@@ -327,13 +328,13 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
         }
     }
     rows_.build(first_, partner_);
-    couplings_.resize(rows_.partner.size());
-    secondRows_.resize(nPairs);
+    resizeScratch(couplings_, nPairs);
+    resizeScratch(secondRows_, nPairs);
     selfR_.resize(N);
     ambientForces_.resize(6*N);
-    shearRows_.resize(rateChanges_ ? nPairs : 0);
+    resizeScratch(shearRows_, rateChanges_ ? nPairs : 0);
     shearForces_.setZero(rateChanges_ ? 6*N : 0);
-    pairStress_.resize(rateChanges_ ? nPairs : 0);
+    resizeScratch(pairStress_, rateChanges_ ? nPairs : 0);
 
     // A unit shear rate, for F_s and the Stokes stresslet
     FlowSample unit;
@@ -368,7 +369,6 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
 
             const Vec6 vi = relativeVelocity(p, fi, i);
             std::uint32_t s = first_[i];
-            std::uint32_t e = rows_.offset[i];
             for (std::uint32_t k = pairs.offset[i]; k < pairs.offset[i + 1]; ++k)
             {
                 const Vec3& r = separation_[k];
@@ -407,8 +407,7 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
                     }
                     ++h;
                 });
-                Coupling& q = couplings_[e++];
-                q = Coupling{g.n, c.XA.ij, c.YA.ij, c.YB.ji, c.YB.ij, c.YC.ij};
+                couplings_[s] = Coupling{g.n, c.XA.ij, c.YA.ij, c.YB.ji, c.YB.ij, c.YC.ij};
                 addSelf(R, g.n, c.XA.ii, c.YA.ii, c.YB.ii, c.YC.ii);
 
                 // F^E, T^E of i now, of j in pass 2
@@ -440,9 +439,8 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
         }
     }
 
-    // Pass 2, over the second particles: their couplings (the coupling of
-    // the first particle with Bf and Bt exchanged), self blocks, F^E, T^E
-    // (and F_s), in pair order
+    // Pass 2, over the second particles: their self blocks, F^E, T^E (and
+    // F_s), in pair order
     #pragma omp parallel for schedule(static) if(threaded(N))
     for (std::size_t j = 0; j < N; ++j)
     {
@@ -454,9 +452,7 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
                 continue;
             }
             const std::uint32_t s = PairRows::slotOf(rows_.slot[e]);
-            const std::uint32_t i = rows_.partner[e];
-            const Coupling& c = couplings_[rows_.offset[i] + s - first_[i]];
-            couplings_[e] = Coupling{c.n, c.XA, c.YA, c.Bt, c.Bf, c.YC};
+            const Coupling& c = couplings_[s];
             const SecondRow& second = secondRows_[s];
             addSelf(R, c.n, second.jj[0], second.jj[1], second.jj[2], second.jj[3]);
             ambientForces_.segment<6>(6*j) += second.fE;
@@ -546,7 +542,7 @@ Mat3 HydrodynamicResistance::lubricationStresslet
                 }
                 const std::uint32_t s = rows_.slot[e];
                 const PairStress& q = pairStress_[s];
-                const Vec6 yi = firstRow(couplings_[e], q.ii, vi, v.segment<6>(6*rows_.partner[e]));
+                const Vec6 yi = firstRow(couplings_[s], q.ii, vi, v.segment<6>(6*rows_.partner[e]));
                 S[blk] += symm(outer(q.r, a*q.fE + b*q.fS - yi.head<3>()));
             }
         }
@@ -758,8 +754,16 @@ void HydrodynamicResistance::apply(const Vector& x, Vector& y) const
         addSelf(S, X + 6*i, a);
         for (std::uint32_t e = rows_.offset[i]; e < rows_.offset[i + 1]; ++e)
         {
-            const Coupling& c = couplings_[e];
-            addCoupling(c.n, c.XA, c.YA, c.Bf, c.Bt, c.YC, X + 6*rows_.partner[e], a);
+            // The pair's coupling, stored for its first particle: on the
+            // second Bf and Bt exchange
+            const std::uint32_t t = rows_.slot[e];
+            const Coupling& c = couplings_[PairRows::slotOf(t)];
+            const bool second = PairRows::second(t);
+            addCoupling
+            (
+                c.n, c.XA, c.YA, second ? c.Bt : c.Bf, second ? c.Bf : c.Bt,
+                c.YC, X + 6*rows_.partner[e], a
+            );
         }
         for (std::uint32_t e = contactRows_.offset[i]; e < contactRows_.offset[i + 1]; ++e)
         {

@@ -1,8 +1,10 @@
 #include "forces/ForceField.H"
 
 #include "core/Parallel.H"
+#include "core/Scratch.H"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <utility>
@@ -357,7 +359,12 @@ void ForceField::gatherBlocks(PairList* history, const Output& out)
 }
 
 
-void ForceField::secondParticles(const PairList& near, const Output& out)
+void ForceField::secondParticles
+(
+    const PairList& near,
+    const std::vector<std::array<double, 6>>& slotS,
+    const Output& out
+)
 {
     // Pass 2: the parts of j, in the transposed order of the slots
     const std::size_t N = near.nParticles();
@@ -376,7 +383,7 @@ void ForceField::secondParticles(const PairList& near, const Output& out)
                 T += slotForce_[k].T;
                 if (perParticle)
                 {
-                    S += slotS_[k];
+                    S += symmetricMatrix(slotS[k].data());
                 }
             }
         });
@@ -433,9 +440,12 @@ void ForceField::nearPass
         blockContacts_.resize(nB);
     }
     const bool linearise = (linearisable<Ms> || ...) && out.contacts;
-    slotForce_.resize(near.nPairs());
-    slotOn_.resize(near.nPairs());
-    slotS_.resize(perParticle ? near.nPairs() : 0);
+    resizeScratch(slotForce_, near.nPairs());
+    resizeScratch(slotOn_, near.nPairs());
+    // Half of each pair's stresslet, for j (symmetric: its upper entries):
+    // only when the stresslets per particle are asked for, and released
+    // after
+    std::vector<std::array<double, 6>> slotS(perParticle ? near.nPairs() : 0);
 
     // Pass 1: the rows of i; the parts of j wait in the slots
     #pragma omp parallel for schedule(static) if(threaded(N))
@@ -541,8 +551,13 @@ void ForceField::nearPass
                 slotForce_[k] = SlotForce{-e.total.F, e.total.Tj};
                 if (perParticle)
                 {
-                    Si += 0.5*e.total.S;
-                    slotS_[k] = 0.5*e.total.S;
+                    const Mat3 half = 0.5*e.total.S;
+                    Si += half;
+                    slotS[k] =
+                    {
+                        half(0, 0), half(0, 1), half(0, 2),
+                        half(1, 1), half(1, 2), half(2, 2)
+                    };
                 }
                 slotOn_[k] = 1;
             }
@@ -556,7 +571,7 @@ void ForceField::nearPass
         }
     }
     gatherBlocks(advanceHistory ? history : nullptr, out);
-    secondParticles(near, out);
+    secondParticles(near, slotS, out);
 }
 
 

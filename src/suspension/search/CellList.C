@@ -1,6 +1,7 @@
 #include "search/CellList.H"
 
 #include "core/Parallel.H"
+#include "core/Scratch.H"
 
 #include <omp.h>
 
@@ -195,7 +196,7 @@ namespace
         }
         list.offset[N] = static_cast<std::uint32_t>(total);
 
-        list.j.resize(total);
+        resizeScratch(list.j, total);
         #pragma omp parallel for schedule(static) if(threaded(N))
         for (std::size_t k = 0; k < K; ++k)
         {

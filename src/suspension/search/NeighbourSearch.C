@@ -1,5 +1,6 @@
 #include "search/NeighbourSearch.H"
 
+#include "core/Memory.H"
 #include "core/Parallel.H"
 
 #include <algorithm>
@@ -264,6 +265,7 @@ void NeighbourSearch::rebuild
         cells_.emplace(box, range);
     }
     particles.permute(cells_->sort(particles.x));
+    far_ = PairRows();      // released before its successor is searched
     if (farList)
     {
         PairList half;
@@ -274,7 +276,6 @@ void NeighbourSearch::rebuild
     else
     {
         cells_->findPairs(particles, box, gap, params_.stencil, near);
-        far_ = PairRows();
     }
     near.transpose();
     near.clearHistory();
@@ -287,6 +288,7 @@ void NeighbourSearch::rebuild
     flowStrain_ = 0;
     range_ = range;
 
+    returnFreedMemory();
     ++stats_.builds;
     stats_.carried = carried;
     stats_.dropped = contacts.size() - carried;

@@ -1,6 +1,7 @@
 #include "suspensionCloud.H"
 #include "inputChecks.H"
 #include "boundBox.H"
+#include "core/Memory.H"
 #include "core/Parallel.H"
 
 #include <omp.h>
@@ -284,6 +285,7 @@ void Foam::suspensionCloud::writeState() const
         committed_
     );
     writtenIndex_ = runTime_.timeIndex();
+    suspension::returnFreedMemory();
 
     // A run restarted from this time starts by re-sorting the particles and
     // rebuilding the neighbour list; so does this one before its next step
