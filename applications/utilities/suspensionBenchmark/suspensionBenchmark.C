@@ -385,13 +385,11 @@ namespace
         const double vector = 6*sizeof(double);
 
         // The operator's data per particle: the product's (the drag and
-        // M/dt, the self block, the row offsets, the row entries with
-        // their partner and slot, one coupling per pair: the row of the
-        // pair's other particle reads it again, counted once), then the
-        // preconditioner's inverse block
+        // M/dt, the self block, the row offsets, the row entries), then
+        // the preconditioner's inverse block
         const double productOperator =
             2*sizeof(double) + sizeof(Resistance::SelfBlock) + 2*sizeof(std::uint32_t)
-          + entries*(2*sizeof(std::uint32_t) + 0.5*sizeof(Resistance::Coupling))
+          + entries*(sizeof(Resistance::Coupling) + sizeof(std::uint32_t))
           + contacts*(sizeof(Resistance::Contact) + 2*sizeof(std::uint32_t));
         const double iterationOperator = productOperator + 21*sizeof(float);
 

@@ -288,10 +288,17 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
     const double gap = gap_;
     const StokesDrag& drag = models_.drag();
 
-    // The minimum-image r of each slot of the list, computed once: NaN
-    // for a slot out of the range of every hydrodynamic pair model; the
-    // count of each first particle
-    resizeScratch(separation_, pairs.nPairs());
+    // The slots of the list within the range of a hydrodynamic pair
+    // model (a byte each) and the count of each first particle. Pass 1
+    // takes the minimum image of those again: a few operations, against
+    // the 24 bytes a slot that keeping it would hold
+    auto separation = [&](std::size_t i, std::uint32_t j)
+    {
+        Vec3 r = p.x[j] - p.x[i];
+        box.minimumImage(r);
+        return r;
+    };
+    resizeScratch(inRange_, pairs.nPairs());
     first_.assign(N + 1, 0);
     #pragma omp parallel for schedule(static) if(threaded(N))
     for (std::size_t i = 0; i < N; ++i)
@@ -300,11 +307,9 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
         for (std::uint32_t k = pairs.offset[i]; k < pairs.offset[i + 1]; ++k)
         {
             const std::uint32_t j = pairs.j[k];
-            Vec3 r = p.x[j] - p.x[i];
-            box.minimumImage(r);
             const double R = p.a[i] + p.a[j] + gap;
-            const bool in = gap >= 0 && r.squaredNorm() < R*R;
-            separation_[k] = in ? r : Vec3::Constant(std::nan(""));
+            const bool in = gap >= 0 && separation(i, j).squaredNorm() < R*R;
+            inRange_[k] = in;
             count += in;
         }
         first_[i + 1] = count;
@@ -321,14 +326,14 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
         std::uint32_t s = first_[i];
         for (std::uint32_t k = pairs.offset[i]; k < pairs.offset[i + 1]; ++k)
         {
-            if (!std::isnan(separation_[k].x()))
+            if (inRange_[k])
             {
                 partner_[s++] = pairs.j[k];
             }
         }
     }
     rows_.build(first_, partner_);
-    resizeScratch(couplings_, nPairs);
+    resizeScratch(couplings_, rows_.partner.size());
     resizeScratch(secondRows_, nPairs);
     selfR_.resize(N);
     ambientForces_.resize(6*N);
@@ -369,14 +374,15 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
 
             const Vec6 vi = relativeVelocity(p, fi, i);
             std::uint32_t s = first_[i];
+            std::uint32_t e = rows_.offset[i];
             for (std::uint32_t k = pairs.offset[i]; k < pairs.offset[i + 1]; ++k)
             {
-                const Vec3& r = separation_[k];
-                if (std::isnan(r.x()))
+                if (!inRange_[k])
                 {
                     continue;
                 }
                 const std::uint32_t j = pairs.j[k];
+                const Vec3 r = separation(i, j);
                 const PairGeometry g = PairGeometry::make(r, a, p.a[j]);
                 const Vec6 vj = relativeVelocity(p, ambient[j], j);
 
@@ -407,7 +413,7 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
                     }
                     ++h;
                 });
-                couplings_[s] = Coupling{g.n, c.XA.ij, c.YA.ij, c.YB.ji, c.YB.ij, c.YC.ij};
+                couplings_[e++] = Coupling{g.n, c.XA.ij, c.YA.ij, c.YB.ji, c.YB.ij, c.YC.ij};
                 addSelf(R, g.n, c.XA.ii, c.YA.ii, c.YB.ii, c.YC.ii);
 
                 // F^E, T^E of i now, of j in pass 2
@@ -439,8 +445,9 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
         }
     }
 
-    // Pass 2, over the second particles: their self blocks, F^E, T^E (and
-    // F_s), in pair order
+    // Pass 2, over the second particles: their couplings (the coupling of
+    // the first particle with Bf and Bt exchanged), self blocks, F^E, T^E
+    // (and F_s), in pair order
     #pragma omp parallel for schedule(static) if(threaded(N))
     for (std::size_t j = 0; j < N; ++j)
     {
@@ -452,7 +459,9 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
                 continue;
             }
             const std::uint32_t s = PairRows::slotOf(rows_.slot[e]);
-            const Coupling& c = couplings_[s];
+            const std::uint32_t i = rows_.partner[e];
+            const Coupling& c = couplings_[rows_.offset[i] + s - first_[i]];
+            couplings_[e] = Coupling{c.n, c.XA, c.YA, c.Bt, c.Bf, c.YC};
             const SecondRow& second = secondRows_[s];
             addSelf(R, c.n, second.jj[0], second.jj[1], second.jj[2], second.jj[3]);
             ambientForces_.segment<6>(6*j) += second.fE;
@@ -542,7 +551,7 @@ Mat3 HydrodynamicResistance::lubricationStresslet
                 }
                 const std::uint32_t s = rows_.slot[e];
                 const PairStress& q = pairStress_[s];
-                const Vec6 yi = firstRow(couplings_[s], q.ii, vi, v.segment<6>(6*rows_.partner[e]));
+                const Vec6 yi = firstRow(couplings_[e], q.ii, vi, v.segment<6>(6*rows_.partner[e]));
                 S[blk] += symm(outer(q.r, a*q.fE + b*q.fS - yi.head<3>()));
             }
         }
@@ -754,16 +763,8 @@ void HydrodynamicResistance::apply(const Vector& x, Vector& y) const
         addSelf(S, X + 6*i, a);
         for (std::uint32_t e = rows_.offset[i]; e < rows_.offset[i + 1]; ++e)
         {
-            // The pair's coupling, stored for its first particle: on the
-            // second Bf and Bt exchange
-            const std::uint32_t t = rows_.slot[e];
-            const Coupling& c = couplings_[PairRows::slotOf(t)];
-            const bool second = PairRows::second(t);
-            addCoupling
-            (
-                c.n, c.XA, c.YA, second ? c.Bt : c.Bf, second ? c.Bf : c.Bt,
-                c.YC, X + 6*rows_.partner[e], a
-            );
+            const Coupling& c = couplings_[e];
+            addCoupling(c.n, c.XA, c.YA, c.Bf, c.Bt, c.YC, X + 6*rows_.partner[e], a);
         }
         for (std::uint32_t e = contactRows_.offset[i]; e < contactRows_.offset[i + 1]; ++e)
         {

@@ -506,7 +506,7 @@ void ForceField::nearPass
                         const PairKinematics kin
                         {
                             uRel_[i], uRel_[j], wRel_[i], wRel_[j], du,
-                            p.omega[i], p.omega[j], E_[i], E_[j]
+                            p.omega[i], p.omega[j], ambient_[i].E(), ambient_[j].E()
                         };
                         return evaluatePair
                         (
@@ -694,7 +694,6 @@ ForceSummary ForceField::run
     ambient_.resize(N);
     uRel_.resize(N);
     wRel_.resize(N);
-    E_.resize(N);
     blockS_.assign(nB*nC, Mat3::Zero());
     blockStats_.assign(nB, BlockStats{0, 0, {-1, -1}});
     if (out.F) out.F->resize(N);
@@ -721,7 +720,6 @@ ForceSummary ForceField::run
                 const FlowSample& f = ambient_[i] = flow.sample(p.x[i], box.shearRate());
                 uRel_[i] = p.u[i] - f.U;
                 wRel_[i] = p.omega[i] - f.Omega();
-                E_[i] = f.E();
                 Vec3 F = Vec3::Zero();
                 Vec3 T = Vec3::Zero();
                 Mat3 Si = Mat3::Zero();
