@@ -32,12 +32,14 @@ Usage
 
 #include "fvCFD.H"
 #include "suspensionCloud.H"
+#include "core/Memory.H"
 #include "meshField.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
 int main(int argc, char *argv[])
 {
+    suspension::useSystemForLargeArrays();
     argList::addNote
     (
         "Write the particle box and a random packing of the population of"
