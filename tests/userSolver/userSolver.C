@@ -15,9 +15,11 @@ Description
 #include "fvCFD.H"
 #include "ambientFlow.H"
 #include "suspensionCloud.H"
+#include "core/Memory.H"
 
 int main(int argc, char *argv[])
 {
+    suspension::useSystemForLargeArrays();
     #include "setRootCase.H"
     suspensionIO::selectStartTime(args);    // start from a complete time
     #include "createTime.H"

@@ -1,6 +1,6 @@
 #include "core/Memory.H"
 
-#include <cstdlib>      // defines __GLIBC__ with the GNU C library
+#include <cstdlib>      // includes <features.h>, which defines __GLIBC__
 
 #if defined(__GLIBC__)
 #include <malloc.h>
@@ -12,7 +12,7 @@ namespace suspension
 void useSystemForLargeArrays()
 {
 #if defined(__GLIBC__)
-    mallopt(M_MMAP_THRESHOLD, 1 << 20);
+    mallopt(M_MMAP_THRESHOLD, static_cast<int>(largeArrayBytes));
 #endif
 }
 

@@ -359,12 +359,7 @@ void ForceField::gatherBlocks(PairList* history, const Output& out)
 }
 
 
-void ForceField::secondParticles
-(
-    const PairList& near,
-    const std::vector<std::array<double, 6>>& slotS,
-    const Output& out
-)
+void ForceField::secondParticles(const PairList& near, const Output& out)
 {
     // Pass 2: the parts of j, in the transposed order of the slots
     const std::size_t N = near.nParticles();
@@ -383,7 +378,7 @@ void ForceField::secondParticles
                 T += slotForce_[k].T;
                 if (perParticle)
                 {
-                    S += symmetricMatrix(slotS[k].data());
+                    S += symmetricMatrix(slotS_[k].data());
                 }
             }
         });
@@ -442,10 +437,10 @@ void ForceField::nearPass
     const bool linearise = (linearisable<Ms> || ...) && out.contacts;
     resizeScratch(slotForce_, near.nPairs());
     resizeScratch(slotOn_, near.nPairs());
-    // Half of each pair's stresslet, for j (symmetric: its upper entries):
-    // only when the stresslets per particle are asked for, and released
-    // after
-    std::vector<std::array<double, 6>> slotS(perParticle ? near.nPairs() : 0);
+    if (perParticle)
+    {
+        resizeScratch(slotS_, near.nPairs());
+    }
 
     // Pass 1: the rows of i; the parts of j wait in the slots
     #pragma omp parallel for schedule(static) if(threaded(N))
@@ -553,7 +548,7 @@ void ForceField::nearPass
                 {
                     const Mat3 half = 0.5*e.total.S;
                     Si += half;
-                    slotS[k] =
+                    slotS_[k] =
                     {
                         half(0, 0), half(0, 1), half(0, 2),
                         half(1, 1), half(1, 2), half(2, 2)
@@ -571,7 +566,7 @@ void ForceField::nearPass
         }
     }
     gatherBlocks(advanceHistory ? history : nullptr, out);
-    secondParticles(near, slotS, out);
+    secondParticles(near, out);
 }
 
 

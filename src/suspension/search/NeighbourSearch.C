@@ -265,13 +265,17 @@ void NeighbourSearch::rebuild
         cells_.emplace(box, range);
     }
     particles.permute(cells_->sort(particles.x));
-    far_ = PairRows();      // released before its successor is searched
+
+    // The old rows released before the new ones are searched
+    std::size_t freed = far_.bytes();
+    far_ = PairRows();
     if (farList)
     {
         PairList half;
         cells_->findPairs(particles, box, searchGap, params_.stencil, half);
         nearPairs(particles, box, half, gap, near);
         far_.build(half.offset, half.j, false);
+        freed += half.bytes();
     }
     else
     {
@@ -288,7 +292,12 @@ void NeighbourSearch::rebuild
     flowStrain_ = 0;
     range_ = range;
 
-    returnFreedMemory();
+    // What the rebuild freed back to the system, when it is worth a pass
+    // over the heap (core/Memory.H)
+    if (freed >= largeArrayBytes)
+    {
+        returnFreedMemory();
+    }
     ++stats_.builds;
     stats_.carried = carried;
     stats_.dropped = contacts.size() - carried;

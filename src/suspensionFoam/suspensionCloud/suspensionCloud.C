@@ -649,11 +649,20 @@ Foam::suspensionCloud::particleStresslets() const
     if (SIndex_ != runTime_.timeIndex())
     {
         // Evaluating the stresslets changes no state of the engine
-        // (Simulation::particleStresslets); the state passed its checks
+        // (Simulation::particleStresslets); the state passed its checks.
+        // Asked for at every step (the coupled solver), they keep their
+        // per-slot scratch for the next; asked for now and then (writes,
+        // function objects), they free it at once
+        const bool everyStep = SIndex_ == runTime_.timeIndex() - 1;
         try
         {
             const suspension::NonStopArithmetic nonStop;
-            const_cast<suspension::Simulation&>(*sim_).particleStresslets(S_);
+            suspension::Simulation& sim = const_cast<suspension::Simulation&>(*sim_);
+            sim.particleStresslets(S_);
+            if (!everyStep)
+            {
+                sim.releaseStressletScratch();
+            }
         }
         catch (const std::exception& err)
         {
