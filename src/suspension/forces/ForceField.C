@@ -599,7 +599,8 @@ void ForceField::farPass
 
         // Over the particles i, their rows: the central force f n of each
         // partner, half of the pair's stresslet (f/|r|) r r (eq. 9d, six
-        // entries), per block
+        // entries), per block; the halves taken of the sums (exactly the
+        // sums of the halves: a factor of 2 rounds nothing)
         #pragma omp parallel for schedule(static) if(threaded(N))
         for (std::size_t b = 0; b < reductionBlocks(N); ++b)
         {
@@ -641,7 +642,7 @@ void ForceField::farPass
                             s += sm;
                             for (int c = 0; c < 6; ++c)
                             {
-                                W[m][c] += 0.5*sm*rr[c];
+                                W[m][c] += sm*rr[c];
                             }
                         }
                     });
@@ -650,16 +651,16 @@ void ForceField::farPass
                     {
                         for (int c = 0; c < 6; ++c)
                         {
-                            Wi[c] += 0.5*s*rr[c];
+                            Wi[c] += s*rr[c];
                         }
                     }
                 }
                 if (out.F) (*out.F)[i] += Fi;
-                if (perParticle) (*out.S)[i] += symmetricMatrix(Wi);
+                if (perParticle) (*out.S)[i] += 0.5*symmetricMatrix(Wi);
             }
             for (std::size_t m = 0; m < nM; ++m)
             {
-                blockS_[b*nC + contribution[m]] += symmetricMatrix(W[m]);
+                blockS_[b*nC + contribution[m]] += 0.5*symmetricMatrix(W[m]);
             }
         }
     }
