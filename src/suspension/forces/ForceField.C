@@ -462,6 +462,7 @@ void ForceField::nearPass
             Vec3 Fi = Vec3::Zero();
             Vec3 Ti = Vec3::Zero();
             Mat3 Si = Mat3::Zero();
+            const Mat3 Ei = ambient_[i].E();
             for (std::uint32_t k = near.offset[i]; k < near.offset[i + 1]; ++k)
             {
                 const std::uint32_t j = near.j[k];
@@ -501,7 +502,7 @@ void ForceField::nearPass
                         const PairKinematics kin
                         {
                             uRel_[i], uRel_[j], wRel_[i], wRel_[j], du,
-                            p.omega[i], p.omega[j], ambient_[i].E(), ambient_[j].E()
+                            p.omega[i], p.omega[j], Ei, ambient_[j].E()
                         };
                         return evaluatePair
                         (
