@@ -18,6 +18,7 @@
 #------------------------------------------------------------------------------
 set -eu
 root=$(cd "${0%/*}/../.." && pwd)
+. "$root/docs/performance/benchmarkFunctions"
 home=$HOME; tree=$root
 if [ "${1:-}" = --tree ]; then home=${2%%:*}; tree=${2#*:}; shift 2; fi
 case=$(cd "$1" && pwd); start=$2; end=$3; shift 3
@@ -34,14 +35,7 @@ cp -r "$case/constant" "$case/system" "$case/$start" "$work"
 (
     set +eu
     cd "$work"
-    export HOME=$home
-    unset WM_PROJECT_DIR FOAM_USER_LIBBIN FOAM_USER_APPBIN
-    . "$tree/etc/bashrc" > /dev/null 2>&1
-    . "$tree/etc/caseFunctions"
-    setEntry system/controlDict startFrom latestTime
-    setEntry system/controlDict endTime "$end"
-    setEntry system/controlDict writeControl runTime
-    setEntry system/controlDict writeInterval "$end"
+    windowCase "$home" "$tree" "$end"
     env "$@" OMP_NUM_THREADS=1 OMP_WAIT_POLICY=PASSIVE /usr/bin/time -v \
         wavyShearFoam > log.wavyShearFoam 2> log.time &
     timer=$!

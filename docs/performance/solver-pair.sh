@@ -27,6 +27,7 @@
 #------------------------------------------------------------------------------
 set -eu
 root=$(cd "${0%/*}/../.." && pwd)
+. "$root/docs/performance/benchmarkFunctions"
 threadsMode=false
 if [ "${1:-}" = --threads ]; then threadsMode=true; shift; fi
 case=$(cd "$1" && pwd); start=$2; end=$3; repeats=${4:-5}
@@ -46,14 +47,7 @@ run()
     (
         set +eu
         cd "$c"
-        export HOME=$home
-        unset WM_PROJECT_DIR FOAM_USER_LIBBIN FOAM_USER_APPBIN
-        . "$tree/etc/bashrc" > /dev/null 2>&1
-        . "$tree/etc/caseFunctions"
-        setEntry system/controlDict startFrom latestTime
-        setEntry system/controlDict endTime "$end"
-        setEntry system/controlDict writeControl runTime
-        setEntry system/controlDict writeInterval "$end"
+        windowCase "$home" "$tree" "$end"
         OMP_NUM_THREADS=$threads OMP_WAIT_POLICY=PASSIVE /usr/bin/time -v \
             wavyShearFoam > log.wavyShearFoam 2> log.time
     ) || { echo "solver-pair.sh: $label failed, see $c" >&2; exit 1; }
