@@ -12,7 +12,7 @@ namespace
     template<class T>
     void permuteArray(std::vector<T>& v, const std::vector<std::size_t>& order)
     {
-        std::vector<T> tmp(v.size());
+        std::vector<T> tmp(order.size());
         for (std::size_t k = 0; k < order.size(); ++k)
         {
             tmp[k] = v[order[k]];
@@ -49,6 +49,10 @@ void Particles::add
     m.push_back(mass);
     I.push_back(0.4*mass*radius*radius);
     id.push_back(label);
+    if (!ghost.empty())
+    {
+        ghost.push_back(0);
+    }
 }
 
 
@@ -65,6 +69,10 @@ void Particles::permute(const std::vector<std::size_t>& order)
     permuteArray(m, order);
     permuteArray(I, order);
     permuteArray(id, order);
+    if (!ghost.empty())
+    {
+        permuteArray(ghost, order);
+    }
 }
 
 

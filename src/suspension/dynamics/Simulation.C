@@ -16,26 +16,64 @@ namespace suspension
 
 namespace
 {
+    //- The smallest and largest radius of all processes; throws without
+    //  particles
+    std::pair<double, double> radiusRange
+    (
+        const Particles& p,
+        const std::optional<Domain>& domain
+    )
+    {
+        double e[2] =
+        {
+            -std::numeric_limits<double>::infinity(),
+            -std::numeric_limits<double>::infinity()
+        };
+        for (const double a : p.a)
+        {
+            e[0] = std::max(e[0], -a);
+            e[1] = std::max(e[1], a);
+        }
+        if (domain)
+        {
+            domain->comm().max(e, 2);
+        }
+        if (!(e[1] > 0))
+        {
+            throw std::invalid_argument("Simulation: no particles");
+        }
+        return {-e[0], e[1]};
+    }
+
     TimeStepLimits makeLimits
     (
         const ForceModels& models,
-        const Particles& p,
+        const std::pair<double, double>& radii,
         const AmbientFlow& flow,
         const Simulation::Params& params,
         bool implicitNormalContact,
         double maxRate
     )
     {
-        if (p.size() == 0)
-        {
-            throw std::invalid_argument("Simulation: no particles");
-        }
-        const auto [aMin, aMax] = std::minmax_element(p.a.begin(), p.a.end());
         return TimeStepLimits
         (
-            models, *aMin, *aMax, params.rho, params.safety, params.integrator,
-            flow.maxVelocityGradient(maxRate), implicitNormalContact
+            models, radii.first, radii.second, params.rho, params.safety,
+            params.integrator, flow.maxVelocityGradient(maxRate),
+            implicitNormalContact
         );
+    }
+
+    std::optional<Domain> makeDomain
+    (
+        const Decomposition& d,
+        const LeesEdwardsBox& box
+    )
+    {
+        if (!d.comm)
+        {
+            return std::nullopt;
+        }
+        return std::optional<Domain>(std::in_place, *d.comm, d.layout, box.L());
     }
 
     //- The implicit integrators take the normal contact springs
@@ -45,7 +83,7 @@ namespace
     bool implicitNormalContact
     (
         const ForceModels& models,
-        const Particles& p,
+        const std::pair<double, double>& radii,
         const AmbientFlow& flow,
         const Simulation::Params& params
     )
@@ -61,7 +99,7 @@ namespace
         double contact = std::numeric_limits<double>::infinity();
         double others = contact;
         const TimeStepLimits explicitNormal =
-            makeLimits(models, p, flow, params, false, flow.maxShearRate());
+            makeLimits(models, radii, flow, params, false, flow.maxShearRate());
         for (const TimeStepLimit& l : explicitNormal.all())
         {
             double& v = l.name == "contact" ? contact : others;
@@ -78,14 +116,21 @@ Simulation::Simulation
     const LeesEdwardsBox& box,
     const AmbientFlow& flow,
     ForceModels models,
-    const Params& params
+    const Params& params,
+    const Decomposition& decomposition
 )
 :
     params_(params),
     particles_(std::move(particles)),
     box_(box),
     flow_(flow),
-    forces_(std::move(models), particles_.a),
+    domain_(makeDomain(decomposition, box)),
+    forces_
+    (
+        std::move(models),
+        domain_ ? domain_->distinctRadii(particles_.a) : particles_.a
+    ),
+    radii_(radiusRange(particles_, domain_)),
     search_
     ({
         forces_.nearGap(),
@@ -95,18 +140,17 @@ Simulation::Simulation
     }),
     implicitNormalContact_
     (
-        suspension::implicitNormalContact(forces_.models(), particles_, flow, params)
+        suspension::implicitNormalContact(forces_.models(), radii_, flow, params)
     ),
     limits_
     (
         makeLimits
         (
-            forces_.models(), particles_, flow, params, implicitNormalContact_,
+            forces_.models(), radii_, flow, params, implicitNormalContact_,
             flow.maxShearRate()
         )
     ),
     dtMax_(params.deltaT > 0 ? params.deltaT : limits_.deltaT()),
-    aMin_(*std::min_element(particles_.a.begin(), particles_.a.end())),
     stepLimitCounts_
     {
         {params.deltaT > 0 ? "deltaT" : limits_.binding().name, 0},
@@ -147,6 +191,14 @@ Simulation::Simulation
             " affine in the rate: velocityVerlet has no controller"
         );
     }
+    if (domain_ && params.integrator != Integrator::velocityVerlet)
+    {
+        throw std::invalid_argument
+        (
+            "Simulation: a decomposed run takes velocityVerlet; the implicit"
+            " integrators run on one process"
+        );
+    }
     if (params.adaptiveThreads && threaded(particles_.size()))
     {
         governor_.emplace(omp_get_max_threads());
@@ -183,6 +235,82 @@ void Simulation::evaluateForces(double dt)
     else
     {
         summary_ = forces_.advance(particles_, box_, flow_, pairs_, search_.far(), dt);
+    }
+    reduce(summary_);
+}
+
+
+void Simulation::reduce(ForceSummary& summary) const
+{
+    if (!domain_)
+    {
+        return;
+    }
+    const Communicator& comm = domain_->comm();
+    std::vector<double> sums;
+    for (const Mat3& S : summary.stresslet)
+    {
+        sums.insert(sums.end(), S.data(), S.data() + 9);
+    }
+    sums.push_back(double(summary.nContacts));
+    comm.sum(sums.data(), sums.size());
+    for (std::size_t c = 0; c < summary.stresslet.size(); ++c)
+    {
+        summary.stresslet[c] = Eigen::Map<const Mat3>(sums.data() + 9*c);
+    }
+    summary.nContacts = static_cast<std::size_t>(sums.back());
+
+    // The largest overlap, and its pair as the processes that see it name it
+    double largest = summary.maxOverlap;
+    comm.max(&largest, 1);
+    double pair[2] = {-1, -1};
+    if (summary.maxOverlap == largest)
+    {
+        pair[0] = double(summary.maxOverlapPair[0]);
+        pair[1] = double(summary.maxOverlapPair[1]);
+    }
+    comm.max(pair, 2);
+    summary.maxOverlap = largest;
+    summary.maxOverlapPair[0] = static_cast<std::int64_t>(pair[0]);
+    summary.maxOverlapPair[1] = static_cast<std::int64_t>(pair[1]);
+}
+
+
+bool Simulation::anyProcess(bool local) const
+{
+    return domain_ ? domain_->comm().any(local) : local;
+}
+
+
+void Simulation::rebuildLists()
+{
+    if (!domain_)
+    {
+        search_.rebuild(particles_, box_, pairs_);
+        return;
+    }
+    std::vector<KeyedContact> contacts = NeighbourSearch::contacts(particles_, pairs_);
+    domain_->distribute(particles_, contacts, search_.searchRange(radii_.second));
+    search_.rebuild(particles_, box_, pairs_, contacts, radii_.second);
+    domain_->index(particles_);
+}
+
+
+void Simulation::updateLists()
+{
+    if (!domain_)
+    {
+        search_.update(particles_, box_, pairs_);
+        return;
+    }
+    // Every process rebuilds when one needs to; else the ghosts follow
+    if (anyProcess(!search_.built(particles_, box_, pairs_) || search_.needsRebuild()))
+    {
+        rebuildLists();
+    }
+    else
+    {
+        domain_->refresh(particles_);
     }
 }
 
@@ -232,7 +360,7 @@ void Simulation::start
             throw std::invalid_argument(msg.str());
         }
     }
-    search_.rebuild(particles_, box_, pairs_);
+    rebuildLists();
     if (!forcesGiven)
     {
         evaluateForces(0);
@@ -260,6 +388,7 @@ void Simulation::start
         (
             particles_, box_, flow_, pairs_, search_.far(), ForceField::Output()
         );
+        reduce(summary_);
     }
     check();
 }
@@ -269,7 +398,7 @@ void Simulation::flowChanged()
 {
     // Chosen again as for a run started in this flow
     const bool normal =
-        suspension::implicitNormalContact(forces_.models(), particles_, flow_, params_);
+        suspension::implicitNormalContact(forces_.models(), radii_, flow_, params_);
     if (implicit_ && normal != implicitNormalContact_)
     {
         implicit_.emplace
@@ -284,7 +413,7 @@ void Simulation::flowChanged()
     implicitNormalContact_ = normal;
     limits_ = makeLimits
     (
-        forces_.models(), particles_, flow_, params_, normal, flow_.maxShearRate()
+        forces_.models(), radii_, flow_, params_, normal, flow_.maxShearRate()
     );
     dtMax_ = params_.deltaT > 0 ? params_.deltaT : limits_.deltaT();
     if (!(params_.deltaT > 0))
@@ -445,13 +574,16 @@ std::string Simulation::takeStep(double dt)
           ? ImplicitEuler::move(particles_, box_, dt)
           : VelocityVerlet::predict(particles_, box_, dt);
     }
-    if (unwrapped < particles_.size())
+    if (anyProcess(unwrapped < particles_.size()))
     {
-        return moveFailure(unwrapped, dt);
+        return unwrapped < particles_.size()
+          ? moveFailure(unwrapped, dt)
+          : "a particle of another process cannot be wrapped into the box at "
+          + stepName(dt);
     }
     {
         ScopedTime timer(times_.search);
-        search_.update(particles_, box_, pairs_);
+        updateLists();
     }
     evaluateForces(dt);
     if (!implicit_)
@@ -497,7 +629,7 @@ void Simulation::followStressControlledRate()
       : flow_.maxShearRate();
     limits_ = makeLimits
     (
-        forces_.models(), particles_, flow_, params_, implicitNormalContact_,
+        forces_.models(), radii_, flow_, params_, implicitNormalContact_,
         bound
     );
     dtMax_ = limits_.deltaT();
@@ -694,11 +826,18 @@ std::pair<double, std::size_t> Simulation::stepBound() const
         double uMax = 0;
         for (std::size_t i = 0; i < particles_.size(); ++i)
         {
-            uMax = std::max(uMax, (particles_.u[i] - ambient[i].U).norm());
+            if (!particles_.isGhost(i))
+            {
+                uMax = std::max(uMax, (particles_.u[i] - ambient[i].U).norm());
+            }
+        }
+        if (domain_)
+        {
+            domain_->comm().max(&uMax, 1);
         }
         if (uMax > 0)
         {
-            tighten(params_.maxDisplacement*aMin_/uMax, 1);
+            tighten(params_.maxDisplacement*radii_.first/uMax, 1);
         }
     }
     return bound;
@@ -744,32 +883,57 @@ void Simulation::resetKernelTimes()
 double Simulation::velocityFluctuation() const
 {
     const Particles& p = particles_;
-    double sum = 0;
+    double sum[2] = {0, 0};
     for (std::size_t i = 0; i < p.size(); ++i)
     {
-        sum += (p.u[i] - flow_.sample(p.x[i], box_.shearRate()).U).squaredNorm();
+        if (!p.isGhost(i))
+        {
+            sum[0] += (p.u[i] - flow_.sample(p.x[i], box_.shearRate()).U).squaredNorm();
+            sum[1] += 1;
+        }
     }
     flow_.sampled(p);
-    return p.size() ? sum/p.size() : 0;
+    if (domain_)
+    {
+        domain_->comm().sum(sum, 2);
+    }
+    return sum[1] > 0 ? sum[0]/sum[1] : 0;
 }
 
 
 void Simulation::check() const
 {
     const Particles& p = particles_;
+    std::ostringstream msg;
     for (std::size_t i = 0; i < p.size(); ++i)
     {
-        if (!p.x[i].allFinite() || !p.F[i].allFinite() || !p.T[i].allFinite()
-         || !p.u[i].allFinite() || !p.omega[i].allFinite())
+        if
+        (
+            !p.isGhost(i)
+         && (
+                !p.x[i].allFinite() || !p.F[i].allFinite()
+             || !p.T[i].allFinite() || !p.u[i].allFinite()
+             || !p.omega[i].allFinite()
+            )
+        )
         {
-            std::ostringstream msg;
             msg << "non-finite state of particle " << p.id[i]
                 << " at step " << steps_ << " (t = " << time_ << "): x = "
                 << p.x[i].transpose() << ", u = " << p.u[i].transpose()
                 << ", F = " << p.F[i].transpose() << ", T = "
                 << p.T[i].transpose();
-            throw SimulationError(msg.str());
+            break;
         }
+    }
+    const bool here = !msg.str().empty();
+    if (anyProcess(here))
+    {
+        throw SimulationError
+        (
+            here ? msg.str()
+          : "non-finite state on another process at step "
+          + std::to_string(steps_)
+        );
     }
     if (summary_.maxOverlap > params_.maxOverlap)
     {

@@ -244,7 +244,7 @@ void ForceField::countContacts
                 Vec3 r = p.x[j] - p.x[i];
                 box.minimumImage(r);
                 const double R = p.a[i] + p.a[j];
-                if (r.squaredNorm() < R*R)
+                if (r.squaredNorm() < R*R && p.countsPair(i, j))
                 {
                     countContact
                     (
@@ -304,7 +304,7 @@ namespace
                     {
                         e.total.S += f.S;
                     }
-                    S[m] += f.S;
+                    if (S) S[m] += f.S;
                     if constexpr (linearisable<Ms>)
                     {
                         if (linearise)
@@ -488,10 +488,12 @@ void ForceField::nearPass
                 // U_inf there: relative velocities unchanged
                 const Vec3 jump = image*imageVelocity*Vec3::UnitX();
                 const Vec3 du = p.u[j] + jump - p.u[i];
-                if (g.h < 0)
+                const bool count = p.countsPair(i, j);
+                if (g.h < 0 && count)
                 {
                     countContact(stats, g, p.id[i], p.id[j]);
                 }
+                Mat3* const sums = count ? S : nullptr;
 
                 ContactState next;
                 const ContactState& old = readHistory ? near.history(k) : next;
@@ -507,7 +509,7 @@ void ForceField::nearPass
                         return evaluatePair
                         (
                             ms, g, &kin, old, next, dt, perParticle,
-                            linearise, advanceHistory, S
+                            linearise, advanceHistory, sums
                         );
                     }
                     else
@@ -515,7 +517,7 @@ void ForceField::nearPass
                         return evaluatePair
                         (
                             ms, g, nullptr, old, next, dt, perParticle,
-                            linearise, advanceHistory, S
+                            linearise, advanceHistory, sums
                         );
                     }
                 }();
@@ -609,6 +611,11 @@ void ForceField::farPass
             const BlockRange rows(b, N);
             for (std::size_t i = rows.begin; i < rows.end; ++i)
             {
+                // A ghost's row is its owner's
+                if (p.isGhost(i))
+                {
+                    continue;
+                }
                 const Vec3 xi = p.x[i];
                 const double ai = p.a[i];
                 Vec3 Fi = Vec3::Zero();
@@ -731,7 +738,10 @@ ForceSummary ForceField::run
                         Si += d.S;
                         const int c =
                             particleContribution[detail::IndexOf<M, ParticleModels>::value];
-                        blockS_[b*nC + c] += d.S;
+                        if (!p.isGhost(i))
+                        {
+                            blockS_[b*nC + c] += d.S;
+                        }
                     }
                 });
                 if (out.F) (*out.F)[i] = F;

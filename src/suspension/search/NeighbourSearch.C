@@ -13,19 +13,7 @@ namespace suspension
 
 namespace
 {
-    //- A contact keyed by the permanent ids of its pair, lo < hi, with the
-    //  state oriented from lo to hi
-    struct Contact
-    {
-        std::int64_t lo;
-        std::int64_t hi;
-        ContactState state;
-    };
-
-    bool operator<(const Contact& a, const Contact& b)
-    {
-        return a.lo < b.lo || (a.lo == b.lo && a.hi < b.hi);
-    }
+    using Contact = KeyedContact;
 
     //- Throws unless `list` is empty or a consistent list of the particles
     void checkList(const Particles& p, const PairList& list)
@@ -47,44 +35,52 @@ namespace
             );
         }
     }
+}
 
-    //- The active contacts of the list, sorted by their ids
-    std::vector<Contact> collectContacts(const Particles& p, const PairList& list)
+
+std::vector<KeyedContact> NeighbourSearch::contacts
+(
+    const Particles& p,
+    const PairList& list
+)
+{
+    std::vector<KeyedContact> contacts;
+    for (std::size_t i = 0; i < list.nParticles(); ++i)
     {
-        std::vector<Contact> contacts;
-        for (std::size_t i = 0; i < list.nParticles(); ++i)
+        for (std::size_t k = list.offset[i]; k < list.offset[i + 1]; ++k)
         {
-            for (std::size_t k = list.offset[i]; k < list.offset[i + 1]; ++k)
+            const ContactState& s = list.history(k);
+            if (s.active() && p.countsPair(i, list.j[k]))
             {
-                const ContactState& s = list.history(k);
-                if (s.active())
-                {
-                    const std::int64_t a = p.id[i];
-                    const std::int64_t b = p.id[list.j[k]];
-                    contacts.push_back
-                    (
-                        a < b ? Contact{a, b, s} : Contact{b, a, s.reversed()}
-                    );
-                }
-            }
-        }
-        std::sort(contacts.begin(), contacts.end());
-        for (std::size_t c = 1; c < contacts.size(); ++c)
-        {
-            if (!(contacts[c - 1] < contacts[c]))
-            {
-                throw std::logic_error
+                const std::int64_t a = p.id[i];
+                const std::int64_t b = p.id[list.j[k]];
+                contacts.push_back
                 (
-                    "NeighbourSearch: pair of ids ("
-                  + std::to_string(contacts[c].lo) + ", "
-                  + std::to_string(contacts[c].hi) + ") holds two contact"
-                    " histories; particle ids must be unique"
+                    a < b ? Contact{a, b, s} : Contact{b, a, s.reversed()}
                 );
             }
         }
-        return contacts;
     }
+    std::sort(contacts.begin(), contacts.end());
+    for (std::size_t c = 1; c < contacts.size(); ++c)
+    {
+        if (!(contacts[c - 1] < contacts[c]))
+        {
+            throw std::logic_error
+            (
+                "NeighbourSearch: pair of ids ("
+              + std::to_string(contacts[c].lo) + ", "
+              + std::to_string(contacts[c].hi) + ") holds two contact"
+                " histories; particle ids must be unique"
+            );
+        }
+    }
+    return contacts;
+}
 
+
+namespace
+{
     //- Give each slot of the new list the history of its pair; returns the
     //  number of contacts carried
     std::size_t restoreContacts
@@ -111,11 +107,62 @@ namespace
                 if (it != contacts.end() && it->lo == key.lo && it->hi == key.hi)
                 {
                     list.setHistory(k, a < b ? it->state : it->state.reversed());
-                    ++carried;
+                    carried += p.countsPair(i, list.j[k]);
                 }
             }
         }
         return carried;
+    }
+
+    //- How many of the contacts have their carrier, lo, owned here
+    std::size_t carriedHere
+    (
+        const Particles& p,
+        const std::vector<KeyedContact>& contacts
+    )
+    {
+        if (p.ghost.empty())
+        {
+            return contacts.size();
+        }
+        std::vector<std::int64_t> ghosts;
+        for (std::size_t i = 0; i < p.size(); ++i)
+        {
+            if (p.ghost[i]) ghosts.push_back(p.id[i]);
+        }
+        std::sort(ghosts.begin(), ghosts.end());
+        std::size_t n = 0;
+        for (const KeyedContact& c : contacts)
+        {
+            n += !std::binary_search(ghosts.begin(), ghosts.end(), c.lo);
+        }
+        return n;
+    }
+
+    //- Without the pairs of two ghosts (decomposition/Domain.H): nothing
+    //  of theirs is kept
+    void dropGhostPairs(const Particles& p, PairList& half)
+    {
+        if (p.ghost.empty())
+        {
+            return;
+        }
+        std::uint32_t n = 0;
+        std::uint32_t begin = 0;
+        for (std::size_t i = 0; i < half.nParticles(); ++i)
+        {
+            const std::uint32_t end = half.offset[i + 1];
+            for (std::uint32_t k = begin; k < end; ++k)
+            {
+                if (!(p.ghost[i] && p.ghost[half.j[k]]))
+                {
+                    half.j[n++] = half.j[k];
+                }
+            }
+            begin = end;
+            half.offset[i + 1] = n;
+        }
+        half.j.resize(n);
     }
 
     //- The slots of the half list `all` with |r| < a_i + a_j + gap, into
@@ -232,17 +279,32 @@ bool NeighbourSearch::update
     PairList& near
 )
 {
-    const bool current =
-        cells_
-     && path_.size() == particles.size()
-     && near.nParticles() == particles.size()
-     && box.L() == cells_->L();
-    if (current && !needsRebuild())
+    if (built(particles, box, near) && !needsRebuild())
     {
         return false;
     }
     rebuild(particles, box, near);
     return true;
+}
+
+
+bool NeighbourSearch::built
+(
+    const Particles& particles,
+    const LeesEdwardsBox& box,
+    const PairList& near
+) const
+{
+    return cells_
+        && path_.size() == particles.size()
+        && near.nParticles() == particles.size()
+        && box.L() == cells_->L();
+}
+
+
+double NeighbourSearch::searchRange(double aMax) const
+{
+    return 2*aMax + (std::max(params_.gap, params_.farGap) + params_.skin);
 }
 
 
@@ -254,12 +316,23 @@ void NeighbourSearch::rebuild
 )
 {
     checkList(particles, near);
-    const std::vector<Contact> contacts = collectContacts(particles, near);
+    rebuild(particles, box, near, contacts(particles, near));
+}
 
+
+void NeighbourSearch::rebuild
+(
+    Particles& particles,
+    const LeesEdwardsBox& box,
+    PairList& near,
+    const std::vector<KeyedContact>& contacts,
+    double aMax
+)
+{
     const bool farList = params_.farGap > params_.gap;
     const double gap = params_.gap + params_.skin;
     const double searchGap = (farList ? params_.farGap : params_.gap) + params_.skin;
-    const double range = 2*particles.maxRadius() + searchGap;
+    const double range = searchRange(std::max(aMax, particles.maxRadius()));
     if (!cells_ || cells_->range() != range || cells_->L() != box.L())
     {
         cells_.emplace(box, range);
@@ -273,6 +346,7 @@ void NeighbourSearch::rebuild
     {
         PairList half;
         cells_->findPairs(particles, box, searchGap, params_.stencil, half);
+        dropGhostPairs(particles, half);
         nearPairs(particles, box, half, gap, near);
         far_.build(half.offset, half.j, false);
         freed += half.bytes();
@@ -280,6 +354,7 @@ void NeighbourSearch::rebuild
     else
     {
         cells_->findPairs(particles, box, gap, params_.stencil, near);
+        dropGhostPairs(particles, near);
     }
     near.transpose();
     near.clearHistory();
@@ -300,7 +375,7 @@ void NeighbourSearch::rebuild
     }
     ++stats_.builds;
     stats_.carried = carried;
-    stats_.dropped = contacts.size() - carried;
+    stats_.dropped = carriedHere(particles, contacts) - carried;
     stats_.totalDropped += stats_.dropped;
 }
 
