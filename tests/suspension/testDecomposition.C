@@ -65,6 +65,27 @@ TEST(Decomposition, ExplicitRunsGiveTheSerialTrajectory)
 }
 
 
+TEST(Decomposition, TheFarPassGivesTheSerialTrajectory)
+{
+    // The attraction to 4 a0 runs in the far pass (ForceField.H), whose
+    // rows each process sums for its own particles only: 2 and 2 x 2 ranks,
+    // the ghosts as deep as the far range
+    const Vec3 L(21, 21, 21);
+    const Particles start = test::decompositionParticles(L, 1500, 9);
+    const test::RankOutcome serial = test::decomposedRun(start, L, nullptr, {}, 60, 4.0);
+    ASSERT_GT(serial.nContacts, 10u);
+    for (const Domain::Layout layout : {Domain::Layout{2, 1}, {2, 2}})
+    {
+        SCOPED_TRACE("layout " + std::to_string(layout.ny) + " x " + std::to_string(layout.nz));
+        test::onRanks(layout.ny*layout.nz, [&](const Communicator& comm)
+        {
+            const test::RankOutcome mine = test::decomposedRun(start, L, &comm, layout, 60, 4.0);
+            test::expectSerial(serial, mine, comm, 1e-9);
+        });
+    }
+}
+
+
 TEST(Decomposition, SameLayoutTwiceIsBitwiseTheSame)
 {
     const Vec3 L(12, 12, 12);

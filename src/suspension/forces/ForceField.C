@@ -304,7 +304,7 @@ namespace
                     {
                         e.total.S += f.S;
                     }
-                    if (S) S[m] += f.S;
+                    S[m] += f.S;
                     if constexpr (linearisable<Ms>)
                     {
                         if (linearise)
@@ -420,6 +420,7 @@ void ForceField::nearPass
     const double maxGap = std::max({std::get<const Ms*>(ms)->gap()...});
     const double imageVelocity = box.imageVelocity();
     const bool perParticle = out.S != nullptr;
+    const bool ghosts = !p.ghost.empty();
     const bool readHistory = anyHistory<Ms...> && !near.contactOf.empty();
     const bool advanceHistory = anyHistory<Ms...> && history;
     if (advanceHistory && near.contactOf.size() != near.nPairs())
@@ -446,10 +447,14 @@ void ForceField::nearPass
     #pragma omp parallel for schedule(static) if(threaded(N))
     for (std::size_t b = 0; b < nB; ++b)
     {
+        // The stresslet sums of the pairs counted here, and of those another
+        // process counts (decomposition/Domain.H), discarded
         Mat3 S[sizeof...(Ms)];
-        for (Mat3& s : S)
+        Mat3 uncounted[sizeof...(Ms)];
+        for (std::size_t m = 0; m < sizeof...(Ms); ++m)
         {
-            s.setZero();
+            S[m].setZero();
+            uncounted[m].setZero();
         }
         BlockStats& stats = blockStats_[b];
         if (advanceHistory)
@@ -488,12 +493,12 @@ void ForceField::nearPass
                 // U_inf there: relative velocities unchanged
                 const Vec3 jump = image*imageVelocity*Vec3::UnitX();
                 const Vec3 du = p.u[j] + jump - p.u[i];
-                const bool count = p.countsPair(i, j);
+                const bool count = !ghosts || p.countsPair(i, j);
                 if (g.h < 0 && count)
                 {
                     countContact(stats, g, p.id[i], p.id[j]);
                 }
-                Mat3* const sums = count ? S : nullptr;
+                Mat3* const sums = count ? S : uncounted;
 
                 ContactState next;
                 const ContactState& old = readHistory ? near.history(k) : next;
@@ -611,11 +616,6 @@ void ForceField::farPass
             const BlockRange rows(b, N);
             for (std::size_t i = rows.begin; i < rows.end; ++i)
             {
-                // A ghost's row is its owner's
-                if (p.isGhost(i))
-                {
-                    continue;
-                }
                 const Vec3 xi = p.x[i];
                 const double ai = p.a[i];
                 Vec3 Fi = Vec3::Zero();

@@ -165,6 +165,33 @@ namespace
         half.j.resize(n);
     }
 
+    //- The far rows without the ghosts' own rows (decomposition/Domain.H):
+    //  a ghost's row is its owner's, summed there; the far list keeps no
+    //  slots, so the partners alone are compacted
+    void dropGhostRows(const Particles& p, PairRows& rows)
+    {
+        if (p.ghost.empty())
+        {
+            return;
+        }
+        std::uint32_t n = 0;
+        std::uint32_t begin = 0;
+        for (std::size_t i = 0; i < rows.nParticles(); ++i)
+        {
+            const std::uint32_t end = rows.offset[i + 1];
+            if (!p.ghost[i])
+            {
+                for (std::uint32_t e = begin; e < end; ++e)
+                {
+                    rows.partner[n++] = rows.partner[e];
+                }
+            }
+            begin = end;
+            rows.offset[i + 1] = n;
+        }
+        rows.partner.resize(n);
+    }
+
     //- The slots of the half list `all` with |r| < a_i + a_j + gap, into
     //  the half list `near`
     void nearPairs
@@ -349,6 +376,7 @@ void NeighbourSearch::rebuild
         dropGhostPairs(particles, half);
         nearPairs(particles, box, half, gap, near);
         far_.build(half.offset, half.j, false);
+        dropGhostRows(particles, far_);
         freed += half.bytes();
     }
     else
