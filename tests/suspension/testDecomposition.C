@@ -1,6 +1,7 @@
 // Runs decomposed over P ranks (decomposition/Domain.H), threads standing
 // in for processes (ThreadCommunicator.H), against the serial run
 #include "decompositionTestTools.H"
+#include "stressControlledShear.H"
 #include "ThreadCommunicator.H"
 
 #include <gtest/gtest.h>
@@ -47,7 +48,7 @@ TEST(Decomposition, ExplicitRunsGiveTheSerialTrajectory)
     // slabs (Ly/4 = 3) are thinner than the ghost depth
     const Vec3 L(12, 12, 12);
     const Particles start = test::decompositionParticles(L, 300, 7);
-    const test::RankOutcome serial = test::decomposedRun(start, L, nullptr, {}, 100);
+    const test::RankOutcome serial = test::decomposedRun(start, L, nullptr, {});
     ASSERT_GT(serial.nContacts, 10u);
     ASSERT_GT(serial.builds, 2u);
     for (const Domain::Layout layout : {Domain::Layout{1, 1}, {2, 1}, {3, 1}, {4, 1}, {2, 2}, {1, 3}})
@@ -55,7 +56,7 @@ TEST(Decomposition, ExplicitRunsGiveTheSerialTrajectory)
         SCOPED_TRACE("layout " + std::to_string(layout.ny) + " x " + std::to_string(layout.nz));
         test::onRanks(layout.ny*layout.nz, [&](const Communicator& comm)
         {
-            const test::RankOutcome mine = test::decomposedRun(start, L, &comm, layout, 100);
+            const test::RankOutcome mine = test::decomposedRun(start, L, &comm, layout);
             double ghosts = double(mine.ghosts);
             comm.sum(&ghosts, 1);
             EXPECT_EQ(ghosts > 0, comm.size() > 1);
@@ -72,16 +73,55 @@ TEST(Decomposition, TheFarPassGivesTheSerialTrajectory)
     // the ghosts as deep as the far range
     const Vec3 L(21, 21, 21);
     const Particles start = test::decompositionParticles(L, 1500, 9);
-    const test::RankOutcome serial = test::decomposedRun(start, L, nullptr, {}, 60, 4.0);
+    const test::RunCase far{60, 4.0};
+    const test::RankOutcome serial = test::decomposedRun(start, L, nullptr, {}, far);
     ASSERT_GT(serial.nContacts, 10u);
     for (const Domain::Layout layout : {Domain::Layout{2, 1}, {2, 2}})
     {
         SCOPED_TRACE("layout " + std::to_string(layout.ny) + " x " + std::to_string(layout.nz));
         test::onRanks(layout.ny*layout.nz, [&](const Communicator& comm)
         {
-            const test::RankOutcome mine = test::decomposedRun(start, L, &comm, layout, 60, 4.0);
+            const test::RankOutcome mine = test::decomposedRun(start, L, &comm, layout, far);
             test::expectSerial(serial, mine, comm, 1e-9);
         });
+    }
+}
+
+
+TEST(Decomposition, ImplicitRunsGiveTheSerialTrajectory)
+{
+    // 20 steps of implicitEuler and of overdamped (the solve's halo and
+    // sums), and 20 stress-controlled implicitEuler steps (the rate from
+    // stresslets summed over the processes), on the layouts of the
+    // explicit test
+    const Vec3 L(12, 12, 12);
+    const Particles start = test::decompositionParticles(L, 300, 7);
+    const test::StressControlledShear stress(20.0, 0.0);
+    const test::RunCase cases[] =
+    {
+        {20, 0.5, Integrator::implicitEuler, nullptr},
+        {20, 0.5, Integrator::overdamped, nullptr},
+        {20, 0.5, Integrator::implicitEuler, &stress}
+    };
+    for (const test::RunCase& run : cases)
+    {
+        SCOPED_TRACE
+        (
+            std::string(run.flow ? "stress-controlled " : "")
+          + (run.integrator == Integrator::overdamped ? "overdamped" : "implicitEuler")
+        );
+        const test::RankOutcome serial = test::decomposedRun(start, L, nullptr, {}, run);
+        ASSERT_GT(serial.nContacts, 10u);
+        ASSERT_GT(serial.builds, 1u);
+        for (const Domain::Layout layout : {Domain::Layout{2, 1}, {3, 1}, {4, 1}, {2, 2}, {1, 3}})
+        {
+            SCOPED_TRACE("layout " + std::to_string(layout.ny) + " x " + std::to_string(layout.nz));
+            test::onRanks(layout.ny*layout.nz, [&](const Communicator& comm)
+            {
+                const test::RankOutcome mine = test::decomposedRun(start, L, &comm, layout, run);
+                test::expectSerial(serial, mine, comm, 1e-9);
+            });
+        }
     }
 }
 
@@ -93,11 +133,11 @@ TEST(Decomposition, SameLayoutTwiceIsBitwiseTheSame)
     std::vector<test::RankOutcome> a(3), b(3);
     test::onRanks(3, [&](const Communicator& comm)
     {
-        a[comm.rank()] = test::decomposedRun(start, L, &comm, {3, 1}, 60);
+        a[comm.rank()] = test::decomposedRun(start, L, &comm, {3, 1}, {60});
     });
     test::onRanks(3, [&](const Communicator& comm)
     {
-        b[comm.rank()] = test::decomposedRun(start, L, &comm, {3, 1}, 60);
+        b[comm.rank()] = test::decomposedRun(start, L, &comm, {3, 1}, {60});
     });
     for (int r = 0; r < 3; ++r)
     {

@@ -6,6 +6,7 @@
 #include "flow/ShearFlow.H"
 #include "packing/RandomPacking.H"
 #include "packing/SizeDistribution.H"
+#include "stressControlledShear.H"
 
 #include <gtest/gtest.h>
 
@@ -326,25 +327,7 @@ TEST(ShearProgramme, RestartIsBitwise)
 
 namespace
 {
-    //- Simple shear whose rate the engine finds for the shear stress
-    //  sigma0 + sigma1 t
-    class StressControlled
-    :
-        public ShearFlow
-    {
-        double sigma0_, sigma1_;
-
-    public:
-
-        StressControlled(double sigma0, double sigma1)
-        :
-            ShearFlow(0.0), sigma0_(sigma0), sigma1_(sigma1)
-        {}
-
-        bool stressControlled() const override { return true; }
-        double shearStress(double t) const override { return sigma0_ + sigma1_*t; }
-        double maxShearRate() const override { return 10; }
-    };
+    using StressControlled = test::StressControlledShear;
 
     //- Volume fraction of the particles in the box
     double volumeFraction(const Particles& p, const LeesEdwardsBox& box)

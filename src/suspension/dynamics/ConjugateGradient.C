@@ -9,9 +9,10 @@
 namespace suspension
 {
 
-ConjugateGradient::ConjugateGradient(const Params& params)
+ConjugateGradient::ConjugateGradient(const Params& params, const Domain* domain)
 :
-    params_(params)
+    params_(params),
+    domain_(domain)
 {
     if (!(params.tolerance > 0 && params.tolerance < 1) || params.maxIterations == 0)
     {

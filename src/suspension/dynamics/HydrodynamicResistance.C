@@ -287,6 +287,15 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
     const std::size_t nH = pairContributions_.size();
     const double gap = gap_;
     const StokesDrag& drag = models_.drag();
+    const bool ghosts = !p.ghost.empty();
+    ghostRows_.clear();
+    for (std::size_t i = 0; ghosts && i < N; ++i)
+    {
+        if (p.ghost[i])
+        {
+            ghostRows_.push_back(static_cast<std::uint32_t>(i));
+        }
+    }
 
     // The slots of the list within the range of a hydrodynamic pair
     // model (a byte each) and the count of each first particle. Pass 1
@@ -340,6 +349,7 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
     resizeScratch(shearRows_, rateChanges_ ? nPairs : 0);
     shearForces_.setZero(rateChanges_ ? 6*N : 0);
     resizeScratch(pairStress_, rateChanges_ ? nPairs : 0);
+    resizeScratch(uncounted_, rateChanges_ && ghosts ? nPairs : 0);
 
     // A unit shear rate, for F_s and the Stokes stresslet
     FlowSample unit;
@@ -365,8 +375,12 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
             const StokesDrag::Result d = drag.eval(a, fi.U, fi.Omega(), fi);
             Vec6 b;
             b << d.F, d.T;
-            stokesS[blk] += d.S;
-            if (rateChanges_)
+            const bool owned = !ghosts || !p.ghost[i];
+            if (owned)
+            {
+                stokesS[blk] += d.S;
+            }
+            if (rateChanges_ && owned)
             {
                 stokesUnitS[blk] += drag.eval(a, unit.U, unit.Omega(), unit).S;
             }
@@ -385,6 +399,7 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
                 const Vec3 r = separation(i, j);
                 const PairGeometry g = PairGeometry::make(r, a, p.a[j]);
                 const Vec6 vj = relativeVelocity(p, ambient[j], j);
+                const bool counted = !ghosts || p.countsPair(i, j);
 
                 // The scalars and (A.3) F^E, T^E of the models in range
                 // added, and each model's stresslet (9b) of the force on
@@ -406,8 +421,11 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
                             Coupling{g.n, cm.XA.ij, cm.YA.ij, cm.YB.ji, cm.YB.ij, cm.YC.ij},
                             ii, vi, vj
                         );
-                        pairS[blk*nH + h] +=
-                            symm(outer(g.r, fEm.segment<3>(0) - yi.head<3>()));
+                        if (counted)
+                        {
+                            pairS[blk*nH + h] +=
+                                symm(outer(g.r, fEm.segment<3>(0) - yi.head<3>()));
+                        }
                         c += cm;
                         fE += fEm;
                     }
@@ -437,6 +455,10 @@ HydrodynamicResistance::Stresslets HydrodynamicResistance::assemble
                     shearRows_[s] << fS.segment<3>(3), fS.segment<3>(9);
                     pairStress_[s] =
                         {g.r, fE.segment<3>(0), fS.segment<3>(0), {ii[0], ii[1], ii[2], ii[3]}};
+                    if (ghosts)
+                    {
+                        uncounted_[s] = !counted;
+                    }
                 }
                 ++s;
             }
@@ -550,6 +572,10 @@ Mat3 HydrodynamicResistance::lubricationStresslet
                     continue;
                 }
                 const std::uint32_t s = rows_.slot[e];
+                if (!uncounted_.empty() && uncounted_[s])
+                {
+                    continue;
+                }
                 const PairStress& q = pairStress_[s];
                 const Vec6 yi = firstRow(couplings_[e], q.ii, vi, v.segment<6>(6*rows_.partner[e]));
                 S[blk] += symm(outer(q.r, a*q.fE + b*q.fS - yi.head<3>()));
@@ -652,7 +678,13 @@ std::string HydrodynamicResistance::blockFailure
 }
 
 
-void HydrodynamicResistance::setStep(const Particles& p, double dt, bool inertia)
+void HydrodynamicResistance::setStep
+(
+    const Particles& p,
+    double dt,
+    bool inertia,
+    const Communicator* comm
+)
 {
     const std::size_t N = p.size();
     const double invDt = inertia ? 1/dt : 0;
@@ -667,12 +699,18 @@ void HydrodynamicResistance::setStep(const Particles& p, double dt, bool inertia
     }
 
     // The diagonal block of A of each particle, inverted; the first whose
-    // factorisation fails or whose inverse is not finite
+    // factorisation fails or whose inverse is not finite. A ghost's is 0
+    // (its row is its owner's)
     std::size_t failed = N;
     #pragma omp parallel for schedule(static) reduction(min:failed) if(threaded(N))
     for (std::size_t i = 0; i < N; ++i)
     {
         diagonal_[i] = dragAndInertia(p, i, invDt);
+        if (p.isGhost(i))
+        {
+            inverseA_[i].fill(0);
+            continue;
+        }
         const Eigen::LLT<Block> llt(diagonalBlock(p, i, dt, invDt));
         const Block inverse = llt.solve(Block::Identity());
         bool finite = inverse.allFinite();
@@ -689,9 +727,15 @@ void HydrodynamicResistance::setStep(const Particles& p, double dt, bool inertia
             failed = std::min(failed, i);
         }
     }
-    if (failed < N)
+    if (comm ? comm->any(failed < N) : failed < N)
     {
-        throw SimulationError(blockFailure(p, failed, dt, invDt));
+        throw SimulationError
+        (
+            failed < N
+          ? blockFailure(p, failed, dt, invDt)
+          : "a diagonal block of the implicit velocity operator of another"
+            " process is not positive definite or not finite"
+        );
     }
 }
 
@@ -791,6 +835,7 @@ void HydrodynamicResistance::apply(const Vector& x, Vector& y) const
             y[6*i + k] = a[k];
         }
     }
+    zeroGhostRows(y);
 }
 
 

@@ -16,15 +16,16 @@ ImplicitEuler::ImplicitEuler
     bool inertia,
     const ConjugateGradient::Params& solver,
     bool implicitNormalContact,
-    bool rateChanges
+    bool rateChanges,
+    const Domain* domain
 )
 :
     inertia_(inertia),
     resistance_(models, implicitNormalContact, rateChanges),
-    solver_(solver),
+    solver_(solver, domain),
     iterations_(0),
-    stokesXY_(0),
-    stepShearStress_(0)
+    stepShearStress_(0),
+    domain_(domain)
 {}
 
 
@@ -40,7 +41,6 @@ void ImplicitEuler::evaluate
 {
     const HydrodynamicResistance::Stresslets S =
         resistance_.assemble(p, box, ambient, pairs, contacts);
-    stokesXY_ = S.stokes(0, 1);
     summary.stresslet[contributionIndex("stokes")] = S.stokes;
     for (std::size_t h = 0; h < S.pairs.size(); ++h)
     {
@@ -117,6 +117,7 @@ void ImplicitEuler::rightHandSide
 
     // The springs' load by the ambient motion and the dashpot's of V'^n
     resistance_.contactRightHandSide(v_, ambient, shift, dt, b_);
+    resistance_.zeroGhostRows(b_);
 }
 
 
@@ -149,7 +150,7 @@ bool ImplicitEuler::solve
     const StressControl* stress
 )
 {
-    resistance_.setStep(p, dt, inertia_);
+    resistance_.setStep(p, dt, inertia_, domain_ ? &domain_->comm() : nullptr);
     const std::vector<FlowSample>& ambient = shiftedFlow(p, sampled, shift);
     rightHandSide(p, ambient, shift, dt);
 
@@ -163,13 +164,18 @@ bool ImplicitEuler::solve
     }
     if (stress)
     {
+        double local[2] =
+        {
+            shift*resistance_.stokesShearStresslet()(0, 1),
+            resistance_.lubricationStresslet(v_, 1, shift)(0, 1)
+        };
+        if (domain_)
+        {
+            domain_->comm().sum(local, 2);
+        }
         stepShearStress_ =
             stress->eta0*(stress->rate + shift)
-          + (
-                stress->fixedXY + stokesXY_
-              + shift*resistance_.stokesShearStresslet()(0, 1)
-              + resistance_.lubricationStresslet(v_, 1, shift)(0, 1)
-            )/stress->volume;
+          + (stress->fixedXY + stress->stokesXY + local[0] + local[1])/stress->volume;
     }
     setVelocities(p, ambient, dt);
     return true;
@@ -186,7 +192,7 @@ bool ImplicitEuler::solveForStress
 )
 {
     const std::size_t N = p.size();
-    resistance_.setStep(p, dt, inertia_);
+    resistance_.setStep(p, dt, inertia_, domain_ ? &domain_->comm() : nullptr);
 
     // The right-hand side at the samples' rate, b0, and its change per
     // unit of rate, b1 = F_s + the contacts' ambient terms of a unit
@@ -198,6 +204,7 @@ bool ImplicitEuler::solveForStress
     resistance_.contactRightHandSide(v_, sampled, 0, dt, c0);
     resistance_.contactRightHandSide(v_, shiftedFlow(p, sampled, 1), 1, dt, b1_);
     b1_ -= c0;
+    resistance_.zeroGhostRows(b1_);
 
     // V'(s) = V'0 + s V'1: two solves
     statistics_ = solver_.solve(resistance_, b_, v_, &d_);
@@ -210,8 +217,8 @@ bool ImplicitEuler::solveForStress
     const double V = control.volume;
     const double sigma0 =
         control.eta0*control.rate
-      + (control.fixedXY + stokesXY_
-       + resistance_.lubricationStresslet(v_, 1, 0)(0, 1))/V;
+      + (control.fixedXY + control.stokesXY
+       + total(resistance_.lubricationStresslet(v_, 1, 0)(0, 1)))/V;
 
     // V'1 from zero moved along V'0/gammaDot_s to the energy minimum on
     // that line (where the stress is the rate's, V' is nearly proportional
@@ -253,8 +260,11 @@ bool ImplicitEuler::solveForStress
     // stress of the step the target
     const double sigma1 =
         control.eta0
-      + (resistance_.stokesShearStresslet()(0, 1)
-       + resistance_.lubricationStresslet(v1_, 0, 1)(0, 1))/V;
+      + total
+        (
+            resistance_.stokesShearStresslet()(0, 1)
+          + resistance_.lubricationStresslet(v1_, 0, 1)(0, 1)
+        )/V;
     shift = (control.target - sigma0)/sigma1;
     if (!(sigma1 > 0) || !std::isfinite(shift))
     {

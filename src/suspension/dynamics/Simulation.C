@@ -8,6 +8,7 @@
 #include <cmath>
 #include <exception>
 #include <limits>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 
@@ -21,7 +22,7 @@ namespace
     std::pair<double, double> radiusRange
     (
         const Particles& p,
-        const std::optional<Domain>& domain
+        const std::unique_ptr<Domain>& domain
     )
     {
         double e[2] =
@@ -63,7 +64,7 @@ namespace
         );
     }
 
-    std::optional<Domain> makeDomain
+    std::unique_ptr<Domain> makeDomain
     (
         const Decomposition& d,
         const LeesEdwardsBox& box
@@ -71,9 +72,9 @@ namespace
     {
         if (!d.comm)
         {
-            return std::nullopt;
+            return nullptr;
         }
-        return std::optional<Domain>(std::in_place, *d.comm, d.layout, box.L());
+        return std::make_unique<Domain>(*d.comm, d.layout, box.L());
     }
 
     //- The implicit integrators take the normal contact springs
@@ -191,29 +192,32 @@ Simulation::Simulation
             " affine in the rate: velocityVerlet has no controller"
         );
     }
-    if (domain_ && params.integrator != Integrator::velocityVerlet)
-    {
-        throw std::invalid_argument
-        (
-            "Simulation: a decomposed run takes velocityVerlet; the implicit"
-            " integrators run on one process"
-        );
-    }
     if (params.adaptiveThreads && threaded(particles_.size()))
     {
         governor_.emplace(omp_get_max_threads());
     }
     if (params.integrator != Integrator::velocityVerlet)
     {
-        implicit_.emplace
+        makeImplicit
         (
-            forces_.models(),
-            params.integrator == Integrator::implicitEuler,
-            params.solver,
             implicitNormalContact_,
             flow.shearRateChanges() || flow.stressControlled()
         );
     }
+}
+
+
+void Simulation::makeImplicit(bool normal, bool rateChanges)
+{
+    implicit_.emplace
+    (
+        forces_.models(),
+        params_.integrator == Integrator::implicitEuler,
+        params_.solver,
+        normal,
+        rateChanges,
+        domain_.get()
+    );
 }
 
 
@@ -339,14 +343,7 @@ void Simulation::start
      && box_.shearRate() != flow_.shearRate(t)
     )
     {
-        implicit_.emplace
-        (
-            forces_.models(),
-            params_.integrator == Integrator::implicitEuler,
-            params_.solver,
-            implicitNormalContact_,
-            true
-        );
+        makeImplicit(implicitNormalContact_, true);
     }
     for (std::size_t i = 0; i < particles_.size(); ++i)
     {
@@ -381,6 +378,7 @@ void Simulation::start
         (
             particles_, box_, forces_.ambient(), pairs_, contacts_, summary_
         );
+        reduce(summary_);
     }
     else
     {
@@ -401,14 +399,7 @@ void Simulation::flowChanged()
         suspension::implicitNormalContact(forces_.models(), radii_, flow_, params_);
     if (implicit_ && normal != implicitNormalContact_)
     {
-        implicit_.emplace
-        (
-            forces_.models(),
-            params_.integrator == Integrator::implicitEuler,
-            params_.solver,
-            normal,
-            flow_.shearRateChanges() || flow_.stressControlled()
-        );
+        makeImplicit(normal, flow_.shearRateChanges() || flow_.stressControlled());
     }
     implicitNormalContact_ = normal;
     limits_ = makeLimits
@@ -498,7 +489,8 @@ std::string Simulation::takeStep(double dt)
         return ImplicitEuler::StressControl
         {
             target, forces_.models().drag().params().eta, box_.volume(),
-            sampledRate, fixed
+            sampledRate, fixed,
+            summary_.stresslet[contributionIndex("stokes")](0, 1)
         };
     };
     if (flow_.stressControlled())

@@ -2,7 +2,7 @@
 // (pstreamCommunicator), against the serial run on every rank: run as
 //     mpirun -np P testParallelEngine -parallel
 // (ctest: P = 2, 3, 4, oversubscribed). Layouts: P slabs in y, and 2 x 2 in
-// y and z at P = 4.
+// y and z at P = 4; explicit and implicit steps.
 #include "pstreamCommunicator.H"
 #include "argList.H"
 #include "Pstream.H"
@@ -12,23 +12,33 @@
 
 using namespace suspension;
 
-TEST(ParallelEngine, ExplicitRunGivesTheSerialTrajectory)
+TEST(ParallelEngine, RunsGiveTheSerialTrajectory)
 {
+    // 100 explicit steps and 20 implicitEuler steps
     const Foam::pstreamCommunicator comm;
     const Vec3 L(12, 12, 12);
     const Particles start = test::decompositionParticles(L, 300, 7);
-    const test::RankOutcome serial = test::decomposedRun(start, L, nullptr, {}, 100);
-    ASSERT_GT(serial.builds, 2u);
     std::vector<Domain::Layout> layouts{{comm.size(), 1}};
     if (comm.size() == 4)
     {
         layouts.push_back({2, 2});
     }
-    for (const Domain::Layout& layout : layouts)
+    const test::RunCase cases[] =
     {
-        SCOPED_TRACE("layout " + std::to_string(layout.ny) + " x " + std::to_string(layout.nz));
-        const test::RankOutcome mine = test::decomposedRun(start, L, &comm, layout, 100);
-        test::expectSerial(serial, mine, comm, 1e-9);
+        {100, 0.5, Integrator::velocityVerlet, nullptr},
+        {20, 0.5, Integrator::implicitEuler, nullptr}
+    };
+    for (const test::RunCase& run : cases)
+    {
+        SCOPED_TRACE(run.integrator == Integrator::velocityVerlet ? "velocityVerlet" : "implicitEuler");
+        const test::RankOutcome serial = test::decomposedRun(start, L, nullptr, {}, run);
+        ASSERT_GT(serial.builds, 1u);
+        for (const Domain::Layout& layout : layouts)
+        {
+            SCOPED_TRACE("layout " + std::to_string(layout.ny) + " x " + std::to_string(layout.nz));
+            const test::RankOutcome mine = test::decomposedRun(start, L, &comm, layout, run);
+            test::expectSerial(serial, mine, comm, 1e-9);
+        }
     }
 }
 
