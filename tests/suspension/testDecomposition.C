@@ -126,6 +126,38 @@ TEST(Decomposition, ImplicitRunsGiveTheSerialTrajectory)
 }
 
 
+TEST(Decomposition, AContactCrossingAProcessAndTheShearedBoundaryKeepsItsHistory)
+{
+    // Two spheres in contact, thrown up in y together: the upper one
+    // crosses y = L (the Lees-Edwards boundary) into the slab of the other
+    // process while the lower one stays, so the contact ends between two
+    // processes and across the sheared boundary; its stretch, carried by
+    // the lower id, is the serial run's, held once
+    const Vec3 L(12, 12, 12);
+    Particles start;
+    start.add(Vec3(6, L.y() - 0.004, 6), 1.0, test::decompositionRho, 0);
+    start.add(Vec3(6.2, L.y() - 0.004 - 1.985, 6), 1.0, test::decompositionRho, 1);
+    for (Vec3& u : start.u)
+    {
+        u = Vec3(0, 500, 0);
+    }
+    const test::RunCase run{100, 0.5, Integrator::velocityVerlet, nullptr};
+    const test::RankOutcome serial = test::decomposedRun(start, L, nullptr, {}, run);
+    ASSERT_EQ(serial.nContacts, 1u);
+    ASSERT_EQ(serial.contacts.size(), 1u);
+    EXPECT_GT(serial.contacts.begin()->second.xiT.norm(), 0);
+    ASSERT_LT(serial.state.at(0)[0].y(), 1.0) << "the upper sphere wrapped";
+    ASSERT_GT(serial.state.at(1)[0].y(), L.y()/2) << "the lower one did not";
+    test::onRanks(2, [&](const Communicator& comm)
+    {
+        const test::RankOutcome mine = test::decomposedRun(start, L, &comm, {2, 1}, run);
+        // Sphere 0 ends on process 0, sphere 1 on process 1
+        EXPECT_EQ(mine.state.count(comm.rank() == 0 ? 0 : 1), 1u);
+        test::expectSerial(serial, mine, comm, 1e-9);
+    });
+}
+
+
 TEST(Decomposition, SameLayoutTwiceIsBitwiseTheSame)
 {
     const Vec3 L(12, 12, 12);
