@@ -7,10 +7,40 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <initializer_list>
 #include <mutex>
 #include <random>
 
 using namespace suspension;
+
+
+namespace
+{
+    //- The run on each layout, over threads, against the serial run: the
+    //  state of every rank, and ghosts on every rank of P > 1
+    void expectSerialOn
+    (
+        std::initializer_list<Domain::Layout> layouts,
+        const Particles& start,
+        const Vec3& L,
+        const test::RankOutcome& serial,
+        const test::RunCase& run = {}
+    )
+    {
+        for (const Domain::Layout& layout : layouts)
+        {
+            SCOPED_TRACE("layout " + std::to_string(layout.ny) + " x " + std::to_string(layout.nz));
+            test::onRanks(layout.ny*layout.nz, [&](const Communicator& comm)
+            {
+                const test::RankOutcome mine = test::decomposedRun(start, L, &comm, layout, run);
+                double ghosts = double(mine.ghosts);
+                comm.sum(&ghosts, 1);
+                EXPECT_EQ(ghosts > 0, comm.size() > 1);
+                test::expectSerial(serial, mine, comm, 1e-9);
+            });
+        }
+    }
+}
 
 
 TEST(Decomposition, SlabsOwnEveryPointOnce)
@@ -51,18 +81,7 @@ TEST(Decomposition, ExplicitRunsGiveTheSerialTrajectory)
     const test::RankOutcome serial = test::decomposedRun(start, L, nullptr, {});
     ASSERT_GT(serial.nContacts, 10u);
     ASSERT_GT(serial.builds, 2u);
-    for (const Domain::Layout layout : {Domain::Layout{1, 1}, {2, 1}, {3, 1}, {4, 1}, {2, 2}, {1, 3}})
-    {
-        SCOPED_TRACE("layout " + std::to_string(layout.ny) + " x " + std::to_string(layout.nz));
-        test::onRanks(layout.ny*layout.nz, [&](const Communicator& comm)
-        {
-            const test::RankOutcome mine = test::decomposedRun(start, L, &comm, layout);
-            double ghosts = double(mine.ghosts);
-            comm.sum(&ghosts, 1);
-            EXPECT_EQ(ghosts > 0, comm.size() > 1);
-            test::expectSerial(serial, mine, comm, 1e-9);
-        });
-    }
+    expectSerialOn({{1, 1}, {2, 1}, {3, 1}, {4, 1}, {2, 2}, {1, 3}}, start, L, serial);
 }
 
 
@@ -76,15 +95,7 @@ TEST(Decomposition, TheFarPassGivesTheSerialTrajectory)
     const test::RunCase far{60, 4.0};
     const test::RankOutcome serial = test::decomposedRun(start, L, nullptr, {}, far);
     ASSERT_GT(serial.nContacts, 10u);
-    for (const Domain::Layout layout : {Domain::Layout{2, 1}, {2, 2}})
-    {
-        SCOPED_TRACE("layout " + std::to_string(layout.ny) + " x " + std::to_string(layout.nz));
-        test::onRanks(layout.ny*layout.nz, [&](const Communicator& comm)
-        {
-            const test::RankOutcome mine = test::decomposedRun(start, L, &comm, layout, far);
-            test::expectSerial(serial, mine, comm, 1e-9);
-        });
-    }
+    expectSerialOn({{2, 1}, {2, 2}}, start, L, serial, far);
 }
 
 
@@ -113,15 +124,7 @@ TEST(Decomposition, ImplicitRunsGiveTheSerialTrajectory)
         const test::RankOutcome serial = test::decomposedRun(start, L, nullptr, {}, run);
         ASSERT_GT(serial.nContacts, 10u);
         ASSERT_GT(serial.builds, 1u);
-        for (const Domain::Layout layout : {Domain::Layout{2, 1}, {3, 1}, {4, 1}, {2, 2}, {1, 3}})
-        {
-            SCOPED_TRACE("layout " + std::to_string(layout.ny) + " x " + std::to_string(layout.nz));
-            test::onRanks(layout.ny*layout.nz, [&](const Communicator& comm)
-            {
-                const test::RankOutcome mine = test::decomposedRun(start, L, &comm, layout, run);
-                test::expectSerial(serial, mine, comm, 1e-9);
-            });
-        }
+        expectSerialOn({{2, 1}, {3, 1}, {4, 1}, {2, 2}, {1, 3}}, start, L, serial, run);
     }
 }
 

@@ -19,22 +19,7 @@ namespace
 {
     const double rho = 1e-3;        // St (eq. 11)
 
-    //- Every force model of the paper on (Table 3 groups)
-    ForceModels allModels()
-    {
-        ForceModels m;
-        m.set(Lubrication(test::lubrication(1e-3, 0.25)));
-        FrictionalContact::Params c =
-            FrictionalContact::fromGroups(4e5, 2.0/7.0, 1e-7, 1.0);
-        c.kr = 0.1*c.kn;
-        m.set(FrictionalContact(c));
-        const ElectroChemicalScales scales({1.0, 19.0, 0.01});
-        m.set(ElectrostaticRepulsion(scales.repulsion(0.02)));
-        VanDerWaalsAttraction::Params att = scales.attraction();
-        att.cutoffGap = 0.5;
-        m.set(VanDerWaalsAttraction(att));
-        return m;
-    }
+    using test::allModels;
 
     //- Random spheres at volume fraction phi, small overlaps allowed
     Particles randomParticles(const Vec3& L, int n, double a2, unsigned seed)

@@ -139,30 +139,45 @@ namespace
         return n;
     }
 
+    //- The rows (offsets, entries: the partners) compacted to the entries
+    //  (i, j) with keep(i, j), in order
+    template<class Keep>
+    void compactRows
+    (
+        std::vector<std::uint32_t>& offset,
+        std::vector<std::uint32_t>& entries,
+        Keep keep
+    )
+    {
+        std::uint32_t n = 0;
+        std::uint32_t begin = 0;
+        for (std::size_t i = 0; i + 1 < offset.size(); ++i)
+        {
+            const std::uint32_t end = offset[i + 1];
+            for (std::uint32_t k = begin; k < end; ++k)
+            {
+                if (keep(i, entries[k]))
+                {
+                    entries[n++] = entries[k];
+                }
+            }
+            begin = end;
+            offset[i + 1] = n;
+        }
+        entries.resize(n);
+    }
+
     //- Without the pairs of two ghosts (decomposition/Domain.H): nothing
     //  of theirs is kept
     void dropGhostPairs(const Particles& p, PairList& half)
     {
-        if (p.ghost.empty())
+        if (!p.ghost.empty())
         {
-            return;
-        }
-        std::uint32_t n = 0;
-        std::uint32_t begin = 0;
-        for (std::size_t i = 0; i < half.nParticles(); ++i)
-        {
-            const std::uint32_t end = half.offset[i + 1];
-            for (std::uint32_t k = begin; k < end; ++k)
+            compactRows(half.offset, half.j, [&p](std::size_t i, std::uint32_t j)
             {
-                if (!(p.ghost[i] && p.ghost[half.j[k]]))
-                {
-                    half.j[n++] = half.j[k];
-                }
-            }
-            begin = end;
-            half.offset[i + 1] = n;
+                return !(p.ghost[i] && p.ghost[j]);
+            });
         }
-        half.j.resize(n);
     }
 
     //- The far rows without the ghosts' own rows (decomposition/Domain.H):
@@ -170,26 +185,13 @@ namespace
     //  slots, so the partners alone are compacted
     void dropGhostRows(const Particles& p, PairRows& rows)
     {
-        if (p.ghost.empty())
+        if (!p.ghost.empty())
         {
-            return;
-        }
-        std::uint32_t n = 0;
-        std::uint32_t begin = 0;
-        for (std::size_t i = 0; i < rows.nParticles(); ++i)
-        {
-            const std::uint32_t end = rows.offset[i + 1];
-            if (!p.ghost[i])
+            compactRows(rows.offset, rows.partner, [&p](std::size_t i, std::uint32_t)
             {
-                for (std::uint32_t e = begin; e < end; ++e)
-                {
-                    rows.partner[n++] = rows.partner[e];
-                }
-            }
-            begin = end;
-            rows.offset[i + 1] = n;
+                return !p.ghost[i];
+            });
         }
-        rows.partner.resize(n);
     }
 
     //- The slots of the half list `all` with |r| < a_i + a_j + gap, into
