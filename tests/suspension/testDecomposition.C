@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <initializer_list>
+#include <limits>
 #include <mutex>
 #include <random>
 
@@ -158,6 +159,48 @@ TEST(Decomposition, AContactCrossingAProcessAndTheShearedBoundaryKeepsItsHistory
         EXPECT_EQ(mine.state.count(comm.rank() == 0 ? 0 : 1), 1u);
         test::expectSerial(serial, mine, comm, 1e-9);
     });
+}
+
+
+TEST(Decomposition, AFailureOnOneProcessStopsEveryProcess)
+{
+    // One particle's velocity not finite, in the middle of the slab of
+    // process 0 (farther than the ghost depth from the other's): only
+    // process 0 sees it, and every process stops with a SimulationError
+    // at the start (the check is collective), none runs on into a
+    // collective alone
+    const Vec3 L(12, 24, 12);
+    Particles start = test::decompositionParticles(L, 600, 7);
+    start.x[5] = Vec3(6, 6, 6);
+    start.u[5].y() = std::numeric_limits<double>::quiet_NaN();
+    std::vector<int> stopped(2, 0);
+    test::onRanks(2, [&](const Communicator& comm)
+    {
+        Particles mine;
+        for (std::size_t i = comm.rank(); i < start.size(); i += 2)
+        {
+            mine.add(start.x[i], start.a[i], test::decompositionRho, start.id[i]);
+            mine.u.back() = start.u[i];
+        }
+        Simulation::Params params;
+        params.rho = test::decompositionRho;
+        params.maxOverlap = 10;
+        const ShearFlow flow(1.0);
+        Simulation sim
+        (
+            mine, LeesEdwardsBox(L, 1.0), flow, test::allModels(), params,
+            Decomposition{&comm, {2, 1}}
+        );
+        try
+        {
+            sim.start(0);
+        }
+        catch (const SimulationError&)
+        {
+            stopped[comm.rank()] = 1;
+        }
+    });
+    EXPECT_EQ(stopped, std::vector<int>({1, 1}));
 }
 
 
