@@ -683,7 +683,7 @@ void HydrodynamicResistance::setStep
     const Particles& p,
     double dt,
     bool inertia,
-    const Communicator* comm
+    const Domain* domain
 )
 {
     const std::size_t N = p.size();
@@ -727,7 +727,7 @@ void HydrodynamicResistance::setStep
             failed = std::min(failed, i);
         }
     }
-    if (comm ? comm->any(failed < N) : failed < N)
+    if (domain ? domain->comm().any(failed < N) : failed < N)
     {
         throw SimulationError
         (

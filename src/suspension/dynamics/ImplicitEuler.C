@@ -150,7 +150,7 @@ bool ImplicitEuler::solve
     const StressControl* stress
 )
 {
-    resistance_.setStep(p, dt, inertia_, domain_ ? &domain_->comm() : nullptr);
+    resistance_.setStep(p, dt, inertia_, domain_);
     const std::vector<FlowSample>& ambient = shiftedFlow(p, sampled, shift);
     rightHandSide(p, ambient, shift, dt);
 
@@ -169,10 +169,7 @@ bool ImplicitEuler::solve
             shift*resistance_.stokesShearStresslet()(0, 1),
             resistance_.lubricationStresslet(v_, 1, shift)(0, 1)
         };
-        if (domain_)
-        {
-            domain_->comm().sum(local, 2);
-        }
+        sumOverProcesses(domain_, local, 2);
         stepShearStress_ =
             stress->eta0*(stress->rate + shift)
           + (stress->fixedXY + stress->stokesXY + local[0] + local[1])/stress->volume;
@@ -192,7 +189,7 @@ bool ImplicitEuler::solveForStress
 )
 {
     const std::size_t N = p.size();
-    resistance_.setStep(p, dt, inertia_, domain_ ? &domain_->comm() : nullptr);
+    resistance_.setStep(p, dt, inertia_, domain_);
 
     // The right-hand side at the samples' rate, b0, and its change per
     // unit of rate, b1 = F_s + the contacts' ambient terms of a unit
