@@ -213,7 +213,7 @@ restart|incompleteFlow)
         [ -d "$work/b/0.1.incomplete" ] || fail "no 0.1.incomplete"
     fi
     for f in lagrangian/suspension/x lagrangian/suspension/U \
-        lagrangian/suspensionContacts/xiT Uprime sigmaPRelaxed; do
+        lagrangian/suspension/contactXiT Uprime sigmaPRelaxed; do
         cmp -s "$work/a/0.1/$f" "$work/b/0.1/$f" || fail "0.1/$f differs"
     done
     diff <(awk '!/^#/ && $1 > 0.05' "$work/a/postProcessing/coupling/0/amplitude.dat") \

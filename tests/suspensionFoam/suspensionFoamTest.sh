@@ -97,6 +97,34 @@
 #               a stored state with a NaN velocity is a FatalIOError naming
 #               the file; a run that blows up under OpenFOAM's floating-
 #               point trap stops with the cause and its last good state
+#   legacyContacts
+#               a time whose contact history is in the folder of earlier
+#               versions (lagrangian/suspensionContacts, pairs either way
+#               round) restarts bitwise
+#   parallelRun a packing decomposed (decomposePar) and run on
+#               2 and 2x2 processes (mpirun, oversubscribed), then
+#               reconstructed: the particles, the contact count, the
+#               rheology, profiles and alpha of each write time are the
+#               serial run's to 1e-9 (velocityVerlet and implicitEuler)
+#   parallelRestart
+#               decompose, run on 2 processes, reconstruct, decompose for 3,
+#               run, reconstruct, run serially: the last time (particles and
+#               contact history) and the rheology rows are the uninterrupted
+#               serial run's to 1e-9; the same chain at writePrecision 10
+#               warns that decomposePar and reconstructPar rounded the state
+#   parallelRepeat
+#               the same decomposed run twice: bitwise the same files
+#   parallelFailure
+#               an overlap running away on one process stops every process
+#               (no hang) with the last good state written and complete on
+#               each, and the run continues from it
+#   parallelPacking
+#               makeSuspension -parallel packs the decomposed case: the run
+#               is the one from the serial packing decomposed
+#   parallelInput
+#               a decomposeParDict the slabs cannot follow (method, n) or a
+#               mesh they do not fit is a FatalIOError naming the file and
+#               the entry
 #------------------------------------------------------------------------------
 set -euo pipefail
 
@@ -200,16 +228,40 @@ byId()
     paste <(listLines "$cloud/origId") <(listLines "$cloud/$2") | sort -n
 }
 
+# The elements of a list-of-lists cloud field $1 as the solver writes it
+# (ascii, compact: the offsets of the lists, then their elements), one per
+# line after the index of its particle; $2 numbers per element
+compactEntries()
+{
+    sed '1,/^\/\/ \* \* \*/d; /^\/\//d' "$1" \
+  | sed -E 's/([0-9]+)\{([^}]*)\}/\1 uniform \2/g' | tr '()' '  ' \
+  | awk -v w="$2" '{ for (k = 1; k <= NF; ++k) t[++n] = $k }
+        END {
+            m = t[1]; i = 2
+            if (t[2] == "uniform") { for (p = 0; p < m; ++p) o[p] = t[3]; i = 4 }
+            else { for (p = 0; p < m; ++p) o[p] = t[i++] }
+            ++i                                 # the number of elements
+            for (p = 0; p + 1 < m; ++p)
+                for (e = o[p]; e < o[p + 1]; ++e) {
+                    printf "%d", p
+                    for (k = 0; k < w; ++k) printf " %s", t[i + e*w + k]
+                    printf "\n"
+                }
+        }'
+}
+
 # The contact history in time directory $1, one contact per line: the two
-# origIds, smaller first, and the stretches xiT, xiR oriented that way
-# (negated for a pair stored the other way round), sorted by the ids
+# origIds, smaller first (the particle that carries it), and the stretches
+# xiT, xiR oriented that way, sorted by the ids
 byContact()
 {
-    local c=$1/lagrangian/suspensionContacts
-    paste <(listLines "$c/idI") <(listLines "$c/idJ") <(listLines "$c/xiT") \
-        <(listLines "$c/xiR") \
-  | awk '{ s = $1 < $2 ? 1 : -1; printf "%s %s", (s > 0 ? $1 : $2), (s > 0 ? $2 : $1)
-           for (k = 3; k <= 8; ++k) printf " %.17g", s*$k; printf "\n" }' \
+    local c=$1/lagrangian/suspension
+    paste -d ' ' <(compactEntries "$c/contactId" 1) \
+        <(compactEntries "$c/contactXiT" 3 | cut -d ' ' -f 2-) \
+        <(compactEntries "$c/contactXiR" 3 | cut -d ' ' -f 2-) \
+  | awk 'NR == FNR { id[NR - 1] = $1; next }
+         { printf "%s %s", id[$1], $2; for (k = 3; k <= 8; ++k) printf " %.17g", $k; printf "\n" }' \
+        <(listLines "$c/origId") - \
   | sort -k1,1n -k2,2n
 }
 
@@ -277,6 +329,74 @@ values()
     awk '/^\(/ { inside = 1; next } /^\)/ { inside = 0 } inside' "$1"
 }
 
+# Decompose case $1 into $2 slabs in y and $3 in z (method simple)
+decomposeDict()
+{
+    printf '%s\n' \
+        "FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }" \
+        "numberOfSubdomains $(($2*$3));" "method          simple;" \
+        "coeffs          { n (1 $2 $3); }" > "$work/$1/system/decomposeParDict"
+}
+
+# The cells of the mesh of case $1 in x, y and z: $2 = "(nx ny nz)"
+setBlocks()
+{
+    sed -i -E "s/^( *hex \([0-9 ]+\)) \([0-9 ]+\)/\1 $2/" \
+        "$work/$1/system/blockMeshDict"
+    grep -qF "$2" "$work/$1/system/blockMeshDict" || fail "no blocks $2"
+}
+
+# Run the OpenFOAM utility $2 (with its arguments) in case $1
+inCase()
+{
+    local c=$1
+    shift
+    (cd "$work/$c" && "$@" > "log.$1.$RANDOM" 2>&1) || fail "$* in case $c"
+}
+
+# mpirun on $1 processes, oversubscribed, with this environment
+mpiRun()
+{
+    local P=$1
+    shift
+    mpirun --oversubscribe --allow-run-as-root -np "$P" -x PATH \
+        -x LD_LIBRARY_PATH -x WM_PROJECT_DIR -x OMP_NUM_THREADS \
+        -x OMP_WAIT_POLICY "$@" -parallel
+}
+
+# Run program $3 (default: the solver) of case $1 on $2 processes, its
+# log log.<program>.<P>; fails unless it succeeds
+runParallel()
+{
+    (cd "$work/$1" && mpiRun "$2" "${3:-$solver}" > "log.${3:-$solver}.$2" 2>&1) \
+        || fail "${3:-$solver} of case $1 on $2 processes"
+}
+
+# The particles (x, U, omega by id) of time $2 of cases $1 and $3 are the
+# same to $4
+expectSameParticles()
+{
+    local field
+    for field in x U omega; do
+        byId "$work/$1/$2" $field > "$work/$1.$2.$field"
+        byId "$work/$3/$2" $field > "$work/$3.$2.$field"
+        [ -s "$work/$3.$2.$field" ] || fail "no $field at $2 in $3"
+        sameNumbers "$work/$1.$2.$field" "$work/$3.$2.$field" "$4" \
+            || fail "$field at $2 of $1 differs from $3's"
+    done
+}
+
+# The rheology rows (but the processes' pair slots) of the .dat files $1
+# and $2 are the same to $3
+expectSameRheology()
+{
+    local cols="# Time strain sigma etaR N1 N2 Pi etaR_lubrication etaR_contact nContacts maxOverlap steps uFluct2"
+    selectedColumns "$1" <(echo "$cols") > "$work/rows.a" || fail "columns of $1"
+    selectedColumns "$2" <(echo "$cols") > "$work/rows.b" || fail "columns of $2"
+    [ -s "$work/rows.a" ] || fail "no rows in $1"
+    sameNumbers "$work/rows.a" "$work/rows.b" "$3" || fail "$1 differs from $2"
+}
+
 # Soft, dense: contacts with history form within the first write interval
 # of a run to 0.1 written every 0.05
 softDenseCase()
@@ -316,8 +436,7 @@ expectExactRestart()
     grep -q "stored suspension" "$b/log.wavyShearFoam" \
         || fail "$1: the restart did not read the stored suspension"
 
-    for f in lagrangian/suspension/* lagrangian/suspensionContacts/* \
-        uniform/suspensionState particleStress alpha
+    for f in lagrangian/suspension/* uniform/suspensionState particleStress alpha
     do
         for path in "$a"/0.1/$f; do
             rel=${path#"$a"/}
@@ -836,8 +955,7 @@ killRestart)
 
     # Every time of the finished run is the uninterrupted run's, bitwise
     for t in $times; do
-        for f in "$work/ref/$t"/lagrangian/suspension/* \
-            "$work/ref/$t"/lagrangian/suspensionContacts/*; do
+        for f in "$work/ref/$t"/lagrangian/suspension/*; do
             rel=${f#"$work/ref/"}
             cmp -s "$f" "$work/k/$rel" || fail "$rel differs from the uninterrupted run"
         done
@@ -1443,7 +1561,7 @@ functionObjectsOff)
     runCase c
     [ ! -e "$work/c/postProcessing" ] || fail "postProcessing written"
     for t in 0 0.002 0.004; do
-        for f in lagrangian/suspension/x lagrangian/suspensionContacts/idI \
+        for f in lagrangian/suspension/x lagrangian/suspension/contactId \
             uniform/suspensionState
         do
             [ -f "$work/c/$t/$f" ] || fail "$t: no $f"
@@ -1530,6 +1648,239 @@ userFunctionObject)
          <(rows "$work/c/postProcessing/rheology/0/rheology.dat" \
             | awk '{ print $1, $2 + 0 }') >&2 \
         || fail "particleCount.dat: the strain differs from rheology.dat"
+    ;;
+
+parallelRun)
+    for integrator in velocityVerlet implicitEuler; do
+        for layout in "2 1" "2 2"; do
+            c=$integrator.${layout/ /x}
+            softDenseCase $c
+            setEntry $c $properties integration/integrator $integrator
+            setEntry $c system/controlDict writePrecision 17
+            inCase $c makeSuspension
+            cp -r "$work/$c" "$work/$c.serial"
+            decomposeDict $c $layout
+            inCase $c decomposePar
+            runParallel $c $((${layout/ /*}))
+            grep -q "Warning" "$work/$c/log.$solver".* && fail "$c: a warning"
+            inCase $c reconstructPar
+            runCase $c.serial
+            for t in 0.05 0.1; do
+                expectSameParticles $c $t $c.serial 1e-9
+                n=$(foamDictionary -entry nContacts -value "$work/$c/$t/uniform/suspensionState")
+                m=$(foamDictionary -entry nContacts -value "$work/$c.serial/$t/uniform/suspensionState")
+                [ "$n" = "$m" ] || fail "$c: $n contacts at $t, the serial run $m"
+                sameNumbers "$work/$c/postProcessing/profiles/$t/profiles.dat" \
+                    "$work/$c.serial/postProcessing/profiles/$t/profiles.dat" 1e-9 \
+                    || fail "$c: profiles at $t"
+                values "$work/$c/$t/alpha" > "$work/alpha.a"
+                values "$work/$c.serial/$t/alpha" > "$work/alpha.b"
+                sameNumbers "$work/alpha.a" "$work/alpha.b" 1e-9 || fail "$c: alpha at $t"
+            done
+            [ "$n" -gt 0 ] || fail "$c: no contacts"
+            expectSameRheology "$work/$c/postProcessing/rheology/0/rheology.dat" \
+                "$work/$c.serial/postProcessing/rheology/0/rheology.dat" 1e-9
+        done
+    done
+    ;;
+
+parallelRestart)
+    for precision in 17 10; do
+        c=chain$precision
+        softDenseCase $c
+        setBlocks $c "(4 6 4)"
+        mesh $c
+        setEntry $c system/controlDict writePrecision $precision
+        setEntry $c system/controlDict endTime 0.05
+        inCase $c makeSuspension
+        cp -r "$work/$c" "$work/$c.serial"
+        setEntry $c.serial system/controlDict endTime 0.15
+        runCase $c.serial
+        decomposeDict $c 2 1
+        inCase $c decomposePar
+        runParallel $c 2
+        inCase $c reconstructPar -latestTime
+        rm -r "$work/$c"/processor*
+        decomposeDict $c 3 1
+        setEntry $c system/controlDict endTime 0.1
+        inCase $c decomposePar -latestTime
+        runParallel $c 3
+        inCase $c reconstructPar -latestTime
+        setEntry $c system/controlDict endTime 0.15
+        runCase $c
+        grep -q "stored suspension of .*/0.1/uniform" "$work/$c/log.$solver" \
+            || fail "$c: the serial run did not continue from 0.1"
+        if [ $precision = 17 ]; then
+            grep -q "Warning" "$work/$c"/log.$solver* && fail "a warning at writePrecision 17"
+            expectSameParticles $c 0.15 $c.serial 1e-9
+            byContact "$work/$c/0.15" > "$work/chain.contacts"
+            byContact "$work/$c.serial/0.15" > "$work/serial.contacts"
+            [ -s "$work/serial.contacts" ] || fail "no contacts at 0.15"
+            sameNumbers "$work/chain.contacts" "$work/serial.contacts" 1e-9 \
+                || fail "the contact history at 0.15 differs"
+            awk '/^#/ || $1 > 0.1' "$work/$c.serial/postProcessing/rheology/0/rheology.dat" \
+                > "$work/serial.rows"
+            expectSameRheology "$work/$c/postProcessing/rheology/0.1/rheology.dat" \
+                "$work/serial.rows" 1e-9
+        else
+            grep -q "writePrecision 10" "$work/$c/log.$solver.3" \
+                || fail "no warning of the rounded state at writePrecision 10"
+        fi
+    done
+    ;;
+
+parallelRepeat)
+    softDenseCase c
+    inCase c makeSuspension
+    decomposeDict c 2 1
+    inCase c decomposePar
+    cp -r "$work/c" "$work/d"
+    runParallel c 2
+    runParallel d 2
+    for f in "$work"/c/processor*/0.1/lagrangian/suspension/* \
+        "$work"/c/processor*/0.1/uniform/suspensionState \
+        "$work"/c/postProcessing/rheology/0/rheology.dat; do
+        cmp -s "$f" "$work/d/${f#"$work"/c/}" || fail "${f#"$work"/c/} differs"
+    done
+    ;;
+
+parallelFailure)
+    # Contacts far too soft for the shear: the overlap runs away at one
+    # pair, on one process, and the run stops on both
+    newCase c
+    setEntry c $properties population/volumeFraction 0.45
+    setEntry c $properties StokesNumber 1e-2
+    setEntry c $properties contact/stiffness 30
+    setEntry c $properties lubrication/epsilon 0.05
+    setEntry c system/controlDict endTime 0.2
+    setEntry c system/controlDict deltaT 0.01
+    mesh c
+    inCase c makeSuspension
+    decomposeDict c 2 1
+    inCase c decomposePar
+    rc=0
+    (cd "$work/c" && timeout 120 bash -c "$(declare -f mpiRun); mpiRun 2 $solver" \
+        > log.failed 2>&1) || rc=$?
+    [ $rc = 0 ] && fail "the run did not stop"
+    [ $rc = 124 ] && fail "the run hung"
+    log=$work/c/log.failed
+    grep -q "runaway overlap" "$log" || fail "no diagnostic"
+    grep -q "last good state" "$log" || fail "no last good state reported"
+    last=$(cd "$work/c/processor0" && ls -d 0.* | sort -g | tail -1)
+    for q in 0 1; do
+        end=$(cd "$work/c/processor$q" && ls -d 0.* | sort -g | tail -1)
+        [ "$end" = "$last" ] || fail "processor$q ends at $end, not $last"
+        grep -q "^nParticles *$N;" "$work/c/processor$q/$last/uniform/suspensionState" \
+            || fail "processor$q: no complete state at $last"
+    done
+    # A run to just after it continues from it
+    setEntry c system/controlDict endTime "$(awk -v t="$last" 'BEGIN { print t + 0.01 }')"
+    (cd "$work/c" && timeout 120 bash -c "$(declare -f mpiRun); mpiRun 2 $solver" \
+        > log.continued 2>&1) || true
+    grep -q "stored suspension of .*processor0/$last/uniform" "$work/c/log.continued" \
+        || fail "the run did not continue from $last"
+    ;;
+
+parallelPacking)
+    softDenseCase c
+    decomposeDict c 2 1
+    setEntry c system/controlDict writePrecision 17
+    cp -r "$work/c" "$work/serial"
+    inCase c decomposePar
+    runParallel c 2 makeSuspension
+    runParallel c 2
+    inCase c reconstructPar -withZero
+    inCase serial makeSuspension
+    inCase serial decomposePar
+    runParallel serial 2
+    inCase serial reconstructPar -withZero
+    byId "$work/c/0" x > "$work/c.x"
+    byId "$work/serial/0" x > "$work/serial.x"
+    [ -s "$work/serial.x" ] || fail "no packing"
+    sameNumbers "$work/c.x" "$work/serial.x" 1e-12 || fail "the packings differ"
+    expectSameParticles c 0.1 serial 1e-12
+    ;;
+
+parallelInput)
+    softDenseCase c
+    inCase c makeSuspension
+    decomposeDict c 2 1
+    inCase c decomposePar
+    # expectParallelError <what> <text>...: the solver on 2 processes stops
+    # before any step with a log naming each text
+    expectParallelError()
+    {
+        if (cd "$work/c" && mpiRun 2 $solver > log.bad 2>&1); then
+            fail "$solver accepted $1"
+        fi
+        shift
+        for text in "$@"; do
+            grep -qF -- "$text" "$work/c/log.bad" || fail "the error does not name '$text'"
+        done
+        grep -q "^strain " "$work/c/log.bad" && fail "time steps were taken"
+        return 0
+    }
+    sed -i 's/^method .*/method          scotch;/' "$work/c/system/decomposeParDict"
+    expectParallelError "method scotch" "FOAM FATAL IO ERROR" decomposeParDict "'method' = scotch"
+    decomposeDict c 2 1
+    sed -i 's/(1 2 1)/(2 1 1)/' "$work/c/system/decomposeParDict"
+    expectParallelError "n (2 1 1)" "FOAM FATAL IO ERROR" decomposeParDict "coeffs/n"
+    # A mesh of 3 cells in y cut in 2: the cut is not the slabs'
+    rm -r "$work/c"
+    softDenseCase c
+    setBlocks c "(4 3 4)"
+    mesh c
+    inCase c makeSuspension
+    decomposeDict c 2 1
+    inCase c decomposePar
+    expectParallelError "a mesh off the slabs" "FOAM FATAL IO ERROR" decomposeParDict "not its slab" "multiple of 2"
+    ;;
+
+legacyContacts)
+    # A time of an earlier version, its contact history in
+    # lagrangian/suspensionContacts (idI, idJ, xiT, xiR; some pairs stored
+    # the other way round, their stretches negated): the restart from it
+    # continues bitwise as from the time itself
+    softDenseCase a
+    runCase a
+    mkdir "$work/b"
+    cp -r "$work/a/constant" "$work/a/system" "$work/a/0" "$work/a/0.05" "$work/b"
+    cloud=$work/b/0.05/lagrangian/suspension
+    old=$work/b/0.05/lagrangian/suspensionContacts
+    mkdir "$old"
+    byContact "$work/a/0.05" \
+      | awk '{ if (NR % 2) print; else printf "%s %s %.17g %.17g %.17g %.17g %.17g %.17g\n",
+               $2, $1, -$3, -$4, -$5, -$6, -$7, -$8 }' > "$work/contacts"
+    [ -s "$work/contacts" ] || fail "no contacts at 0.05"
+    # legacyField <name> <class> <awk print of a line>
+    legacyField()
+    {
+        {
+            echo "FoamFile { version 2.0; format ascii; class $2; object $1; }"
+            wc -l < "$work/contacts"
+            echo "("
+            awk "{ $3 }" "$work/contacts"
+            echo ")"
+        } > "$old/$1"
+    }
+    legacyField idI labelField 'print $1'
+    legacyField idJ labelField 'print $2'
+    legacyField xiT vectorField 'printf "(%s %s %s)\n", $3, $4, $5'
+    legacyField xiR vectorField 'printf "(%s %s %s)\n", $6, $7, $8'
+    rm "$cloud"/contactId "$cloud"/contactXiT "$cloud"/contactXiR
+    # The digests removed as written (foamDictionary would round the rest)
+    state=$work/b/0.05/uniform/suspensionState
+    awk '/^files/ { skip = 1 } !skip { print } skip && /^}/ { skip = 0 }' \
+        "$state" > "$state.edited"
+    mv "$state.edited" "$state"
+    grep -q "^files" "$state" && fail "the digests are still there"
+    runCase b
+    grep -q "stored suspension of .*0.05/uniform" "$work/b/log.$solver" \
+        || fail "the restart did not read the stored suspension"
+    for f in "$work"/a/0.1/lagrangian/suspension/*; do
+        cmp -s "$f" "$work/b/0.1/lagrangian/suspension/${f##*/}" \
+            || fail "0.1/lagrangian/suspension/${f##*/} differs"
+    done
     ;;
 
 outputEntry)

@@ -60,7 +60,6 @@ int main(int argc, char *argv[])
         "Rheology of a dense suspension of rigid spheres in a uniform or"
         " wavy shear flow (Monti et al. 2021)"
     );
-    argList::noParallel();
 
     #include "setRootCase.H"
 

@@ -45,7 +45,6 @@ int main(int argc, char *argv[])
         "Write the particle box and a random packing of the population of"
         " constant/suspensionProperties at the start time"
     );
-    argList::noParallel();
     argList::addBoolOption
     (
         "boxOnly",

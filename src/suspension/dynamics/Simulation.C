@@ -286,17 +286,43 @@ bool Simulation::anyProcess(bool local) const
 }
 
 
+void Simulation::setContacts(std::vector<KeyedContact> contacts)
+{
+    std::sort(contacts.begin(), contacts.end());
+    for (std::size_t k = 0; k < contacts.size(); ++k)
+    {
+        const KeyedContact& c = contacts[k];
+        if (c.lo >= c.hi || (k > 0 && !(contacts[k - 1] < c)))
+        {
+            std::ostringstream msg;
+            msg << "Simulation: the contact (" << c.lo << ", " << c.hi << ") "
+                << (c.lo >= c.hi ? "is not keyed lower id first" : "is given twice");
+            throw std::invalid_argument(msg.str());
+        }
+    }
+    given_ = std::move(contacts);
+}
+
+
 void Simulation::rebuildLists()
 {
-    if (!domain_)
+    if (!domain_ && given_.empty())
     {
         search_.rebuild(particles_, box_, pairs_);
         return;
     }
-    std::vector<KeyedContact> contacts = NeighbourSearch::contacts(particles_, pairs_);
-    domain_->distribute(particles_, contacts, search_.searchRange(radii_.second));
+    std::vector<KeyedContact> contacts =
+        given_.empty() ? NeighbourSearch::contacts(particles_, pairs_) : std::move(given_);
+    given_.clear();
+    if (domain_)
+    {
+        domain_->distribute(particles_, contacts, search_.searchRange(radii_.second));
+    }
     search_.rebuild(particles_, box_, pairs_, contacts, radii_.second);
-    domain_->index(particles_);
+    if (domain_)
+    {
+        domain_->index(particles_);
+    }
 }
 
 
@@ -838,6 +864,12 @@ std::pair<double, std::size_t> Simulation::stepBound() const
 
 void Simulation::particleStresslets(std::vector<Mat3>& S)
 {
+    // The ghosts as their owners are now: a step ends with the owned
+    // particles' last update, after the ghosts' refresh
+    if (domain_)
+    {
+        domain_->refresh(particles_);
+    }
     ForceField::Output out;
     out.S = &S;
     forces_.evaluate(particles_, box_, flow_, pairs_, search_.far(), out);

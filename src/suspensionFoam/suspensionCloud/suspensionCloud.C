@@ -1,6 +1,9 @@
 #include "suspensionCloud.H"
 #include "inputChecks.H"
 #include "boundBox.H"
+#include "IOdictionary.H"
+#include "Pstream.H"
+#include "PstreamReduceOps.H"
 #include "core/Memory.H"
 #include "core/Parallel.H"
 
@@ -80,6 +83,24 @@ bool Foam::suspensionCloud::startsFromStored(const Time& runTime)
             << " and " << runTime.timePath()/"uniform" << nl
             << exit(FatalIOError);
     }
+    // decomposePar and reconstructPar write the cloud as the case writes
+    // its fields: in ascii, at writePrecision
+    if
+    (
+        s.copied
+     && runTime.writeFormat() == IOstream::ASCII
+     && IOstream::defaultPrecision() < 17
+    )
+    {
+        WarningInFunction
+            << "The suspension of time " << runTime.timeName() << " was"
+            << " written by decomposePar or reconstructPar (" << s.reason.c_str()
+            << ") in ascii at writePrecision " << IOstream::defaultPrecision()
+            << " of " << control.name() << ": the run continues from its"
+            << " state rounded to that many digits, not from the state"
+            << " written. Set writePrecision 17 (or writeFormat binary)"
+            << " before decomposing or reconstructing" << nl << endl;
+    }
     return s.state == suspensionIO::stored::complete;
 }
 
@@ -103,6 +124,89 @@ Foam::suspensionIO::state Foam::suspensionCloud::initialState() const
     s.shearRate = 0;
     s.file = population.dict().name();
     return s;
+}
+
+
+suspension::Domain::Layout Foam::suspensionCloud::readLayout
+(
+    const Time& runTime
+)
+{
+    if (!Pstream::parRun())
+    {
+        return {1, 1};
+    }
+    const IOdictionary dict
+    (
+        IOobject
+        (
+            "decomposeParDict",
+            runTime.caseSystem(),
+            runTime,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE,
+            false
+        )
+    );
+    const word method = dict.get<word>("method");
+    if (method != "simple" && method != "hierarchical")
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'method' = " << method << " in " << dict.name()
+            << ": the suspension is decomposed into slabs in y and z, each"
+            << " spanning the box in x (Lees-Edwards), as method simple (or"
+            << " hierarchical) with n (1 ny nz) cuts the mesh" << nl
+            << exit(FatalIOError);
+    }
+    const word coeffs =
+        dict.found("coeffs") ? word("coeffs") : word(method + "Coeffs");
+    const dictionary& c = dict.subDict(coeffs);
+    const Vector<label> n = c.get<Vector<label>>("n");
+    if (n.x() != 1 || n.y() < 1 || n.z() < 1 || n.y()*n.z() != Pstream::nProcs())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry '" << coeffs << "/n' = " << n << " in " << dict.name()
+            << " must be (1 ny nz) with ny nz = " << Pstream::nProcs()
+            << ", the number of processes: each slab spans the box in x, so"
+            << " that the Lees-Edwards boundary shifts whole slabs" << nl
+            << exit(FatalIOError);
+    }
+    return {int(n.y()), int(n.z())};
+}
+
+
+void Foam::suspensionCloud::checkDecomposition() const
+{
+    if (!Pstream::parRun())
+    {
+        return;
+    }
+    // The bounds of this processor's cells (polyMesh::bounds is global)
+    const boundBox bb(mesh_.points(), false);
+    const vector& L = start_.box;
+    const label q = Pstream::myProcNo();
+    const label qy = q % layout_.ny;
+    const label qz = q / layout_.ny;
+    const boundBox slab
+    (
+        point(0, qy*L.y()/layout_.ny, qz*L.z()/layout_.nz),
+        point(L.x(), (qy + 1)*L.y()/layout_.ny, (qz + 1)*L.z()/layout_.nz)
+    );
+    const scalar tol = 1e-5*cmptMax(L);
+    const bool matches =
+        mag(bb.min() - slab.min()) < tol && mag(bb.max() - slab.max()) < tol;
+    if (!returnReduce(matches, andOp<bool>()))
+    {
+        const fileName dictFile = runTime_.path()/runTime_.caseSystem()/"decomposeParDict";
+        FatalIOErrorInFunction(dictFile)
+            << "The mesh of processor " << q << " spans " << bb << ", not"
+            << " its slab " << slab << " of the particle box" << nl
+            << "    Decompose with method simple and n (1 " << layout_.ny
+            << " " << layout_.nz << ") in " << dictFile << ", on a mesh of"
+            << " uniform cells whose number in y is a multiple of "
+            << layout_.ny << " and in z of " << layout_.nz << nl
+            << exit(FatalIOError);
+    }
 }
 
 
@@ -315,11 +419,15 @@ void Foam::suspensionCloud::failed(const std::string& cause)
     // earlier run left there)
     const bool onDisk = lastGoodIndex_ == writtenIndex_;
     runTime_.setTime(lastGoodTime_, lastGoodIndex_);
-    const bool taken = !onDisk && exists(runTime_.timePath());
+    const bool taken =
+        !onDisk && returnReduce(exists(runTime_.timePath()), orOp<bool>());
     if (!onDisk && !taken)
     {
         runTime_.writeNow();
     }
+    // Every process has written before any stops the run (a FatalError in
+    // a parallel run aborts them all)
+    returnReduce(true, andOp<bool>());
 
     FatalErrorInFunction
         << cause.c_str() << nl
@@ -541,6 +649,8 @@ Foam::suspensionCloud::suspensionCloud
     properties_(mesh),
     restart_(startsFromStored(runTime)),
     start_(initialState()),
+    comm_(),
+    layout_(readLayout(runTime)),
     flow_
     (
         flow.valid()
@@ -577,7 +687,8 @@ Foam::suspensionCloud::suspensionCloud
     {
         particles = suspensionIO::readParticles(mesh_, start_, rho);
         checkSetup(particles.maxRadius());
-        if (start_.steps == 0 && start_.nContacts == 0)
+        // (a decomposed start: the serial run relaxes it, not the slabs)
+        if (start_.steps == 0 && start_.nContacts == 0 && !Pstream::parRun())
         {
             removeInitialOverlaps(particles);
         }
@@ -586,7 +697,23 @@ Foam::suspensionCloud::suspensionCloud
     {
         checkSetup(population.radii().back());
         particles = population.pack(rho, properties_.boxRule());
+        if (Pstream::parRun())
+        {
+            // Every process packs the whole population alike and keeps
+            // the particles of its slab
+            const suspension::Domain domain(comm_, layout_, toEigen(start_.box));
+            suspension::Particles mine;
+            for (std::size_t i = 0; i < particles.size(); ++i)
+            {
+                if (domain.owner(particles.x[i]) == Pstream::myProcNo())
+                {
+                    mine.add(particles.x[i], particles.a[i], rho, particles.id[i]);
+                }
+            }
+            particles = std::move(mine);
+        }
     }
+    checkDecomposition();
 
     try
     {
@@ -596,7 +723,10 @@ Foam::suspensionCloud::suspensionCloud
             suspension::LeesEdwardsBox(toEigen(start_.box), flow_->shearRate()),
             engineFlow_,
             properties_.models(),
-            properties_.simulationParams()
+            properties_.simulationParams(),
+            Pstream::parRun()
+          ? suspension::Decomposition{&comm_, layout_}
+          : suspension::Decomposition{}
         );
     }
     catch (const std::invalid_argument& err)
@@ -605,8 +735,17 @@ Foam::suspensionCloud::suspensionCloud
     }
     if (restart_)
     {
-        sim_->pairs() =
-            suspensionIO::readContacts(mesh_, start_, sim_->particles());
+        try
+        {
+            sim_->setContacts
+            (
+                suspensionIO::readContacts(mesh_, start_, sim_->particles())
+            );
+        }
+        catch (const std::invalid_argument& err)
+        {
+            raiseEngineError(properties_, err);
+        }
     }
     start(start_.time, restart_);
 

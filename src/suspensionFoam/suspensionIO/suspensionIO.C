@@ -3,6 +3,11 @@
 #include "ambientFlowAdapter.H"
 #include "passiveParticleCloud.H"
 #include "IOField.H"
+#include "CompactIOField.H"
+#include "labelFieldIOField.H"
+#include "vectorFieldIOField.H"
+#include "Pstream.H"
+#include "PstreamReduceOps.H"
 #include "IOdictionary.H"
 #include "DynamicList.H"
 #include "cloud.H"
@@ -28,7 +33,6 @@
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
 const Foam::word Foam::suspensionIO::cloudName("suspension");
-const Foam::word Foam::suspensionIO::contactsName("suspensionContacts");
 const Foam::word Foam::suspensionIO::stateName("suspensionState");
 
 
@@ -99,35 +103,77 @@ IOobject particleFile
 }
 
 
-IOobject contactFile
-(
-    const fvMesh& mesh,
-    const word& name,
-    const IOobject::readOption r
-)
+//- The contact history of a time written before it was part of the cloud
+const word legacyContacts("suspensionContacts");
+
+IOobject legacyContactFile(const fvMesh& mesh, const word& name)
 {
-    return timeFile(mesh, cloud::prefix/suspensionIO::contactsName, name, r);
+    return timeFile(mesh, cloud::prefix/legacyContacts, name, IOobject::MUST_READ);
 }
 
 
-//- Read an IOField that must hold n entries, as the state file says
-template<class Type>
-Field<Type> readField
-(
-    const IOobject& io,
-    const label n,
-    const suspensionIO::state& s
-)
+//- The processor q of a time directory processor<q>/<time>; -1 for one of
+//  the whole case
+label processorOf(const fileName& timeDir)
 {
-    IOField<Type> fld(io);
+    const word dir = timeDir.path().name();
+    label q = -1;
+    if (dir.size() > 9 && dir.compare(0, 9, "processor") == 0)
+    {
+        readLabel(dir.substr(9), q);
+    }
+    return q;
+}
+
+
+//- The note of the cloud's centres that ties them to the state of the
+//  same write (a state copied by decomposePar or reconstructPar finds
+//  files those tools wrote, without it)
+string writerNote(const string& writer)
+{
+    return "written with the suspensionState of writer " + writer;
+}
+
+
+//- Whether the header of file `path` (compressed or not) holds `text`
+bool headerHolds(const fileName& path, const std::string& text)
+{
+    const fileName file = isFile(path, false) ? path : fileName(path + ".gz");
+    if (!isFile(file, false))
+    {
+        return false;
+    }
+    IFstream is(file.hasExt("gz") ? file.lessExt() : file);
+    std::string head(4096, ' ');
+    is.stdStream().read(&head[0], head.size());
+    head.resize(std::size_t(is.stdStream().gcount()));
+    const std::size_t end = head.find("}");
+    return head.substr(0, end).find(text) != std::string::npos;
+}
+
+
+//- Read a field of type Fld (an IOField, or a CompactIOField of one list
+//  per entry) that must hold n entries, as `source` does
+template<class Fld>
+Fld readSized(const IOobject& io, const label n, const fileName& source)
+{
+    Fld fld(io);
     if (fld.size() != n)
     {
         FatalIOErrorInFunction(fld.objectPath())
             << "File " << fld.objectPath() << " holds " << fld.size()
-            << " entries, but " << s.file << " gives " << n
+            << " entries, but " << source << " gives " << n
             << " for time " << io.instance() << nl
             << exit(FatalIOError);
     }
+    return fld;
+}
+
+
+template<class Type>
+Field<Type> readField(const IOobject& io, const label n, const fileName& source)
+{
+    IOField<Type> fld(readSized<IOField<Type>>(io, n, source));
     Field<Type> values;
     values.transfer(fld);
     return values;
@@ -141,7 +187,7 @@ Field<Type> readFieldOrZero
 (
     const IOobject& io,
     const label n,
-    const suspensionIO::state& s
+    const fileName& source
 )
 {
     IOobject probe(io);
@@ -149,18 +195,29 @@ Field<Type> readFieldOrZero
     {
         return Field<Type>(n, Zero);
     }
-    return readField<Type>(io, n, s);
+    return readField<Type>(io, n, source);
 }
 
 
-vectorField toFoamField(const std::vector<Vec3>& v)
+//- The processes hold `total` of `what` in all, as the state gives
+//  (collective); else a FatalIOError naming the state file
+void checkTotal
+(
+    const label n,
+    const label total,
+    const word& what,
+    const suspensionIO::state& s
+)
 {
-    vectorField f(label(v.size()));
-    forAll(f, i)
+    const label sum = returnReduce(n, sumOp<label>());
+    if (sum != total)
     {
-        f[i] = Foam::toFoam(v[i]);
+        FatalIOErrorInFunction(s.file)
+            << "The cloud " << suspensionIO::cloudName << " holds " << sum
+            << " " << what << (Pstream::parRun() ? " on all processors" : "")
+            << ", but " << s.file << " gives " << total << nl
+            << exit(FatalIOError);
     }
-    return f;
 }
 
 
@@ -172,15 +229,16 @@ std::string systemError()
 
 
 //- Write io to the file `path` (its objectPath() unless given) as
-//  regIOobject::writeObject does, but flushed and checked before the
-//  stream closes: a short write (a full disk, a file size limit) is a
-//  FatalError naming the file
+//  regIOobject::writeObject does (its data as `data` writes it, if given),
+//  but flushed and checked before the stream closes: a short write (a full
+//  disk, a file size limit) is a FatalError naming the file
 void writeChecked
 (
     const regIOobject& io,
     const IOstream::streamFormat fmt,
     const IOstream::compressionType cmp,
-    const fileName& path = fileName::null
+    const fileName& path = fileName::null,
+    const std::function<bool(Ostream&)>& data = nullptr
 )
 {
     const fileName file = path.empty() ? io.objectPath() : path;
@@ -189,7 +247,9 @@ void writeChecked
     bool ok;
     {
         OFstream os(file, fmt, IOstream::currentVersion, cmp);
-        ok = os.good() && io.writeHeader(os) && io.writeData(os);
+        ok =
+            os.good() && io.writeHeader(os)
+         && (data ? data(os) : io.writeData(os));
         if (ok)
         {
             IOobject::writeEndDivider(os);
@@ -217,6 +277,43 @@ void writeField(const IOobject& io, const Field<Type>& values)
         IOField<Type>(io, values),
         runTime.writeFormat(),
         runTime.writeCompression()
+    );
+}
+
+
+//- Write a field of one list per entry in the compact form (the offsets
+//  of the lists, then their values) in either format: what decomposePar
+//  and reconstructPar read as a CompactIOField (CompactIOField's own
+//  writeObject writes ascii as a list of lists, which reconstructPar
+//  leaves out)
+template<class Type>
+void writeFieldField(const IOobject& io, const Field<Field<Type>>& values)
+{
+    const Time& runTime = io.time();
+    const CompactIOField<Field<Type>, Type> header(io, label(0));
+    writeChecked
+    (
+        header, runTime.writeFormat(), runTime.writeCompression(),
+        fileName::null,
+        [&](Ostream& os)
+        {
+            labelList start(values.size() + 1, Zero);
+            forAll(values, i)
+            {
+                start[i + 1] = start[i] + values[i].size();
+            }
+            Field<Type> elems(start.last());
+            label k = 0;
+            for (const Field<Type>& v : values)
+            {
+                for (const Type& e : v)
+                {
+                    elems[k++] = e;
+                }
+            }
+            os << start << elems;
+            return os.good();
+        }
     );
 }
 
@@ -307,8 +404,7 @@ bool endsWithDivider(const fileName& path)
 
 //- The files of timeDir, relative to it, that its state lists: the
 //  solver's fields, those of uniform (OpenFOAM's time; not the state
-//  itself or its temporary), of the cloud and the contact history, and of
-//  the cloud's properties
+//  itself or its temporary), of the cloud, and of the cloud's properties
 fileNameList committedFiles
 (
     const fileName& timeDir,
@@ -319,7 +415,6 @@ fileNameList committedFiles
     {
         "uniform",
         cloud::prefix/suspensionIO::cloudName,
-        cloud::prefix/suspensionIO::contactsName,
         "uniform"/cloud::prefix/suspensionIO::cloudName
     };
     DynamicList<fileName> files;
@@ -390,24 +485,37 @@ void forEachListed
 }
 
 
-//- The files a state written before the digests needs
-bool legacyFilesFound(const fileName& timeDir, string& missing)
+//- The files of the cloud a time needs: those a state that cannot vouch
+//  for them by digests (written before the digests, or not in this
+//  directory) is taken as complete with
+bool cloudFilesFound(const fileName& timeDir, string& missing)
 {
     const fileName cloudDir = timeDir/cloud::prefix/suspensionIO::cloudName;
-    const fileName contactDir = timeDir/cloud::prefix/suspensionIO::contactsName;
+    const fileName legacyDir = timeDir/cloud::prefix/legacyContacts;
+    DynamicList<fileName> files;
     for (const char* f : {"x", "d", "U", "omega", "F", "T", "origId"})
     {
-        if (!isFile(cloudDir/f))
+        files.append(cloudDir/f);
+    }
+    if (isDir(legacyDir))
+    {
+        for (const char* f : {"idI", "idJ", "xiT", "xiR"})
         {
-            missing = cloudDir/f;
-            return false;
+            files.append(legacyDir/f);
         }
     }
-    for (const char* f : {"idI", "idJ", "xiT", "xiR"})
+    else
     {
-        if (!isFile(contactDir/f))
+        for (const char* f : {"contactId", "contactXiT", "contactXiR"})
         {
-            missing = contactDir/f;
+            files.append(cloudDir/f);
+        }
+    }
+    for (const fileName& f : files)
+    {
+        if (!isFile(f))
+        {
+            missing = f;
             return false;
         }
     }
@@ -421,7 +529,7 @@ bool holdsSuspension(const fileName& timeDir)
     return
         isFile(timeDir/"uniform"/suspensionIO::stateName)
      || isDir(timeDir/cloud::prefix/suspensionIO::cloudName)
-     || isDir(timeDir/cloud::prefix/suspensionIO::contactsName);
+     || isDir(timeDir/cloud::prefix/legacyContacts);
 }
 
 
@@ -486,18 +594,37 @@ Foam::suspensionIO::stored Foam::suspensionIO::check(const fileName& timeDir)
         };
     }
 
+    // The state of this directory, or one decomposePar or reconstructPar
+    // copied here, whose digests are those of another directory's files:
+    // the centres it was written with carry its writer (a state written
+    // before the writers: the processor it names)
+    const label writtenBy = state.getOrDefault<label>("processor", -1);
+    const string writer = state.getOrDefault<string>("writer", string::null);
+    const bool own =
+        writer.empty()
+      ? writtenBy == processorOf(timeDir)
+      : headerHolds
+        (
+            timeDir/cloud::prefix/suspensionIO::cloudName/"x",
+            writerNote(writer)
+        );
     const dictionary* files = state.findDict("files");
-    if (!files)
+    if (!files || !own)
     {
         string missing;
-        if (!legacyFilesFound(timeDir, missing))
+        if (!cloudFilesFound(timeDir, missing))
         {
             return {stored::incomplete, "no " + missing};
         }
         return
         {
             stored::complete,
-            "written before the files' digests: not verified"
+            files
+          ? "the state of "
+          + (writtenBy < 0 ? word("the whole case") : "processor" + Foam::name(writtenBy))
+          + ", decomposed or reconstructed: its files are counted, not verified"
+          : "written before the files' digests: not verified",
+            bool(files)
         };
     }
 
@@ -584,10 +711,28 @@ void Foam::suspensionIO::selectStartTime(const argList& args)
 
     if (startFrom == "latestTime")
     {
-        const label latest = latestComplete(times.size() - 1);
-        if (latest < 0)
+        // In a parallel run, the latest time complete on every processor
+        label latest = latestComplete(times.size() - 1);
+        const scalar none = -VGREAT;
+        const scalar mine = latest < 0 ? none : times[latest].value();
+        const scalar common = returnReduce(mine, minOp<scalar>());
+        if (returnReduce(mine, maxOp<scalar>()) == none)
         {
             return;     // the cloud says what the start time holds
+        }
+        while (latest >= 0 && times[latest].value() > common)
+        {
+            latest = latestComplete(latest - 1);
+        }
+        const bool found = latest >= 0 && times[latest].value() == common;
+        if (!returnReduce(found, andOp<bool>()))
+        {
+            FatalErrorInFunction
+                << "The processors of " << casePath.path() << " hold no"
+                << " time that is complete on all of them"
+                << (common == none ? "" : " (the latest on one is " + Foam::name(common) + ")")
+                << ": decompose a complete time of the whole case again"
+                << " (decomposePar)" << nl << exit(FatalError);
         }
         for (label i = times.size() - 1; i > latest; --i)
         {
@@ -685,7 +830,7 @@ Foam::suspensionIO::state Foam::suspensionIO::readState(const Time& runTime)
         dict,
         {
             "time", "steps", "nParticles", "nContacts", "box", "offset",
-            "strain", "shearRate", "files"
+            "strain", "shearRate", "processors", "processor", "writer", "files"
         }
     );
 
@@ -727,20 +872,22 @@ suspension::Particles Foam::suspensionIO::readParticles
     const scalar rho
 )
 {
-    const label n = s.nParticles;
     const auto read = [&](const word& name)
     {
         return particleFile(mesh, name, IOobject::MUST_READ);
     };
-    const vectorField x(readField<vector>(read("x"), n, s));
-    const scalarField d(readField<scalar>(read("d"), n, s));
-    const vectorField U(readField<vector>(read("U"), n, s));
-    const vectorField omega(readField<vector>(read("omega"), n, s));
-    const vectorField F(readField<vector>(read("F"), n, s));
-    const vectorField T(readField<vector>(read("T"), n, s));
-    const vectorField dUdt(readFieldOrZero<vector>(read("dUdt"), n, s));
-    const vectorField dOmegadt(readFieldOrZero<vector>(read("dOmegadt"), n, s));
-    const labelField id(readField<label>(read("origId"), n, s));
+    const vectorField x(IOField<vector>(read("x")));
+    const label n = x.size();
+    checkTotal(n, s.nParticles, "particles", s);
+    const fileName source = read("x").objectPath();
+    const scalarField d(readField<scalar>(read("d"), n, source));
+    const vectorField U(readField<vector>(read("U"), n, source));
+    const vectorField omega(readField<vector>(read("omega"), n, source));
+    const vectorField F(readField<vector>(read("F"), n, source));
+    const vectorField T(readField<vector>(read("T"), n, source));
+    const vectorField dUdt(readFieldOrZero<vector>(read("dUdt"), n, source));
+    const vectorField dOmegadt(readFieldOrZero<vector>(read("dOmegadt"), n, source));
+    const labelField id(readField<label>(read("origId"), n, source));
 
     // Every value finite (a state written by hand, or corrupted)
     const auto checkFinite = [&](const word& name, const vectorField& f)
@@ -812,99 +959,175 @@ suspension::Particles Foam::suspensionIO::readParticles
 }
 
 
-suspension::PairList Foam::suspensionIO::readContacts
+namespace
+{
+
+//- A contact (I, J) of file `file` as the engine keys it: lower id first,
+//  the stretches oriented from it (reversed: negated); its stretches
+//  finite and I, J distinct, else a FatalIOError naming the file
+suspension::KeyedContact keyed
+(
+    const label I,
+    const label J,
+    const vector& xiT,
+    const vector& xiR,
+    const fileName& file
+)
+{
+    for (const vector& v : {xiT, xiR})
+    {
+        if (!std::isfinite(v.x()) || !std::isfinite(v.y()) || !std::isfinite(v.z()))
+        {
+            FatalIOErrorInFunction(file)
+                << "The contact of particles " << I << " and " << J << " in "
+                << file << " has the stretches " << xiT << ", " << xiR
+                << "; they must be finite" << nl << exit(FatalIOError);
+        }
+    }
+    if (I == J)
+    {
+        FatalIOErrorInFunction(file)
+            << "A contact in " << file << " pairs particle " << I
+            << " with itself" << nl << exit(FatalIOError);
+    }
+    const scalar sign = I < J ? 1 : -1;
+    return
+    {
+        min(I, J), max(I, J),
+        suspension::ContactState{toEigen(sign*xiT), toEigen(sign*xiR)}
+    };
+}
+
+
+//- The contacts of a time written before they were part of the cloud
+std::vector<suspension::KeyedContact> readLegacyContacts
+(
+    const fvMesh& mesh,
+    const suspensionIO::state& s
+)
+{
+    const auto read = [&](const word& name)
+    {
+        return legacyContactFile(mesh, name);
+    };
+    const label n = s.nContacts;
+    const labelField idI(readField<label>(read("idI"), n, s.file));
+    const labelField idJ(readField<label>(read("idJ"), n, s.file));
+    const vectorField xiT(readField<vector>(read("xiT"), n, s.file));
+    const vectorField xiR(readField<vector>(read("xiR"), n, s.file));
+    std::vector<suspension::KeyedContact> contacts;
+    forAll(idI, k)
+    {
+        contacts.push_back
+        (
+            keyed(idI[k], idJ[k], xiT[k], xiR[k], read("xiT").objectPath())
+        );
+    }
+    return contacts;
+}
+
+} // End anonymous namespace
+
+
+std::vector<suspension::KeyedContact> Foam::suspensionIO::readContacts
 (
     const fvMesh& mesh,
     const state& s,
     const suspension::Particles& p
 )
 {
-    const label n = s.nContacts;
     const auto read = [&](const word& name)
     {
-        return contactFile(mesh, name, IOobject::MUST_READ);
+        return particleFile(mesh, name, IOobject::MUST_READ);
     };
-    const labelField idI(readField<label>(read("idI"), n, s));
-    const labelField idJ(readField<label>(read("idJ"), n, s));
-    const vectorField xiT(readField<vector>(read("xiT"), n, s));
-    const vectorField xiR(readField<vector>(read("xiR"), n, s));
-
-    std::unordered_map<std::int64_t, std::uint32_t> index;
-    for (std::size_t i = 0; i < p.size(); ++i)
+    const fileName idFile = read("contactId").objectPath();
+    std::vector<suspension::KeyedContact> contacts;
+    if (!isFile(idFile) && isDir(mesh.time().timePath()/cloud::prefix/legacyContacts))
     {
-        index.emplace(p.id[i], std::uint32_t(i));
+        contacts = readLegacyContacts(mesh, s);
     }
-    const auto indexOf = [&](const label id, const label k)
+    else
     {
-        const auto it = index.find(id);
-        if (it == index.end())
+        const label n = label(p.size());
+        const fileName source = read("x").objectPath();
+        const labelFieldCompactIOField partner
+        (
+            readSized<labelFieldCompactIOField>(read("contactId"), n, source)
+        );
+        const vectorFieldCompactIOField xiT
+        (
+            readSized<vectorFieldCompactIOField>(read("contactXiT"), n, source)
+        );
+        const vectorFieldCompactIOField xiR
+        (
+            readSized<vectorFieldCompactIOField>(read("contactXiR"), n, source)
+        );
+        forAll(partner, i)
         {
-            FatalIOErrorInFunction(read("idI").objectPath())
-                << "Contact " << k << " names the particle " << id
-                << ", which the cloud " << cloudName << " does not hold" << nl
-                << exit(FatalIOError);
-        }
-        return it->second;
-    };
-
-    // Contacts as (row, slot) in a compressed-row list of the particles
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs(n);
-    std::vector<std::pair<label, label>> keys(n);
-    forAll(idI, k)
-    {
-        pairs[k] = {indexOf(idI[k], k), indexOf(idJ[k], k)};
-        keys[k] = {min(idI[k], idJ[k]), max(idI[k], idJ[k])};
-        const vector stretch[2] = {xiT[k], xiR[k]};
-        for (const vector& v : stretch)
-        {
-            if (!std::isfinite(v.x()) || !std::isfinite(v.y()) || !std::isfinite(v.z()))
+            const label I = label(p.id[i]);
+            if (xiT[i].size() != partner[i].size() || xiR[i].size() != partner[i].size())
             {
-                FatalIOErrorInFunction(read("xiT").objectPath())
-                    << "Contact " << k << " of particles " << idI[k] << " and "
-                    << idJ[k] << " has the stretches " << xiT[k] << ", "
-                    << xiR[k] << "; they must be finite" << nl
-                    << exit(FatalIOError);
+                FatalIOErrorInFunction(xiT.objectPath())
+                    << "Particle " << i << " (origId " << I << ") has "
+                    << partner[i].size() << " contacts in " << idFile
+                    << " but " << xiT[i].size() << " and " << xiR[i].size()
+                    << " stretches in " << xiT.objectPath() << " and "
+                    << xiR.objectPath() << nl << exit(FatalIOError);
+            }
+            forAll(partner[i], k)
+            {
+                if (partner[i][k] < I)
+                {
+                    FatalIOErrorInFunction(idFile)
+                        << "Particle " << i << " (origId " << I << ") carries"
+                        << " a contact with particle " << partner[i][k]
+                        << " of a lower id; a contact is carried by the"
+                        << " lower id of its pair" << nl << exit(FatalIOError);
+                }
+                contacts.push_back
+                (
+                    keyed(I, partner[i][k], xiT[i][k], xiR[i][k], idFile)
+                );
             }
         }
-        if (idI[k] == idJ[k])
+    }
+    checkTotal(label(contacts.size()), s.nContacts, "contacts", s);
+
+    std::sort(contacts.begin(), contacts.end());
+    for (std::size_t k = 1; k < contacts.size(); ++k)
+    {
+        if (!(contacts[k - 1] < contacts[k]))
         {
-            FatalIOErrorInFunction(read("idJ").objectPath())
-                << "Contact " << k << " pairs particle " << idI[k]
-                << " with itself" << nl << exit(FatalIOError);
+            FatalIOErrorInFunction(idFile)
+                << "The pair (" << contacts[k].lo << ", " << contacts[k].hi
+                << ") holds two contact histories" << nl << exit(FatalIOError);
         }
     }
-    std::sort(keys.begin(), keys.end());
-    const auto twice = std::adjacent_find(keys.begin(), keys.end());
-    if (twice != keys.end())
-    {
-        FatalIOErrorInFunction(read("idI").objectPath())
-            << "The pair (" << twice->first << ", " << twice->second
-            << ") holds two contact histories" << nl << exit(FatalIOError);
-    }
 
-    suspension::PairList list;
-    list.offset.assign(p.size() + 1, 0);
-    for (const auto& ij : pairs)
+    // The partners are here in a serial run (in a parallel one, on any
+    // process)
+    if (!Pstream::parRun())
     {
-        ++list.offset[ij.first + 1];
+        std::unordered_map<std::int64_t, bool> held;
+        for (const std::int64_t id : p.id)
+        {
+            held.emplace(id, true);
+        }
+        for (const suspension::KeyedContact& c : contacts)
+        {
+            for (const std::int64_t id : {c.lo, c.hi})
+            {
+                if (!held.count(id))
+                {
+                    FatalIOErrorInFunction(idFile)
+                        << "A contact names the particle " << label(id)
+                        << ", which the cloud " << cloudName << " does not"
+                        << " hold" << nl << exit(FatalIOError);
+                }
+            }
+        }
     }
-    for (std::size_t i = 0; i < p.size(); ++i)
-    {
-        list.offset[i + 1] += list.offset[i];
-    }
-    list.j.resize(n);
-    list.contactOf.assign(n, suspension::PairList::noContact);
-    std::vector<std::uint32_t> next(list.offset.begin(), list.offset.end() - 1);
-    forAll(idI, k)
-    {
-        const std::uint32_t slot = next[pairs[k].first]++;
-        list.j[slot] = pairs[k].second;
-        list.setHistory
-        (
-            slot, suspension::ContactState{toEigen(xiT[k]), toEigen(xiR[k])}
-        );
-    }
-    return list;
+    return contacts;
 }
 
 
@@ -914,9 +1137,13 @@ Foam::labelList Foam::suspensionIO::findCells
     const suspension::Particles& p
 )
 {
-    labelList cells(label(p.size()));
+    labelList cells(label(p.size()), -1);
     forAll(cells, i)
     {
+        if (p.isGhost(i))
+        {
+            continue;
+        }
         const point x = toFoam(p.x[i]);
         cells[i] = mesh.cellTree().findInside(x);
         if (cells[i] < 0)
@@ -973,9 +1200,23 @@ void Foam::suspensionIO::write
             << " anew: " << systemError().c_str() << nl << exit(FatalError);
     }
 
+    // The particles this process owns (all, in a serial run), in the
+    // engine's order
+    DynamicList<label> owned(label(p.size()));
+    std::unordered_map<std::int64_t, label> entryOf;
+    for (std::size_t i = 0; i < p.size(); ++i)
+    {
+        if (!p.isGhost(i))
+        {
+            entryOf.emplace(p.id[i], owned.size());
+            owned.append(label(i));
+        }
+    }
+    const label n = owned.size();
+
     // The cloud: positions (for ParaView), coordinates, origId
     passiveParticleCloud cloud(mesh, cloudName, IDLList<passiveParticle>());
-    forAll(cells, i)
+    for (const label i : owned)
     {
         passiveParticle* pp =
             new passiveParticle(mesh, toFoam(p.x[i]), cells[i]);
@@ -991,7 +1232,7 @@ void Foam::suspensionIO::write
     {
         nextId = max(nextId, label(id) + 1);
     }
-    passiveParticle::particleCount_ = nextId;
+    passiveParticle::particleCount_ = returnReduce(nextId, maxOp<label>());
     if (!cloud.write())
     {
         FatalErrorInFunction
@@ -1004,51 +1245,70 @@ void Foam::suspensionIO::write
     {
         return particleFile(mesh, name, IOobject::NO_READ);
     };
-    scalarField d(label(p.size()));
-    symmTensorField Sp(label(p.size()));
-    forAll(d, i)
+    const auto ownedField = [&](const std::vector<Vec3>& v)
     {
-        d[i] = 2*p.a[i];
-        Sp[i] = symm(Foam::toFoam(S[i]));
+        vectorField f(n);
+        forAll(f, k)
+        {
+            f[k] = Foam::toFoam(v[owned[k]]);
+        }
+        return f;
+    };
+    scalarField d(n);
+    symmTensorField Sp(n);
+    forAll(d, k)
+    {
+        d[k] = 2*p.a[owned[k]];
+        Sp[k] = symm(Foam::toFoam(S[owned[k]]));
     }
-    writeField(particleOut("x"), toFoamField(p.x));
+    // The writer of this time (the processor, the time and the step), tied
+    // to its centres by their note
+    const string writer = SHA1
+    (
+        Foam::name(processorOf(timeDir)) + " " + timeDir.name() + " "
+      + std::to_string(steps)
+    ).digest().str().substr(0, 16);
+    IOobject xOut(particleOut("x"));
+    xOut.note() = writerNote(writer);
+    writeField(xOut, ownedField(p.x));
     writeField(particleOut("d"), d);
-    writeField(particleOut("U"), toFoamField(p.u));
-    writeField(particleOut("omega"), toFoamField(p.omega));
-    writeField(particleOut("F"), toFoamField(p.F));
-    writeField(particleOut("T"), toFoamField(p.T));
-    writeField(particleOut("dUdt"), toFoamField(p.dudt));
-    writeField(particleOut("dOmegadt"), toFoamField(p.domegadt));
+    writeField(particleOut("U"), ownedField(p.u));
+    writeField(particleOut("omega"), ownedField(p.omega));
+    writeField(particleOut("F"), ownedField(p.F));
+    writeField(particleOut("T"), ownedField(p.T));
+    writeField(particleOut("dUdt"), ownedField(p.dudt));
+    writeField(particleOut("dOmegadt"), ownedField(p.domegadt));
     writeField(particleOut("S"), Sp);
 
-    // Contact history, oriented as the slots of the pair list
-    const suspension::PairList& pairs = sim.pairs();
-    DynamicList<label> idI;
-    DynamicList<label> idJ;
-    DynamicList<vector> xiT;
-    DynamicList<vector> xiR;
-    for (std::size_t i = 0; i < pairs.nParticles(); ++i)
+    // The contact history, each contact with the particle of its lower id
+    const std::vector<suspension::KeyedContact> contacts =
+        suspension::NeighbourSearch::contacts(p, sim.pairs());
+    labelList nCarried(n, Zero);
+    for (const suspension::KeyedContact& c : contacts)
     {
-        for (std::size_t k = pairs.offset[i]; k < pairs.offset[i + 1]; ++k)
-        {
-            const suspension::ContactState& c = pairs.history(k);
-            if (c.active())
-            {
-                idI.append(label(p.id[i]));
-                idJ.append(label(p.id[pairs.j[k]]));
-                xiT.append(toFoam(c.xiT));
-                xiR.append(toFoam(c.xiR));
-            }
-        }
+        ++nCarried[entryOf.at(c.lo)];
     }
-    const auto contactOut = [&](const word& name)
+    Field<labelField> partner(n);
+    Field<vectorField> xiT(n);
+    Field<vectorField> xiR(n);
+    forAll(nCarried, k)
     {
-        return contactFile(mesh, name, IOobject::NO_READ);
-    };
-    writeField(contactOut("idI"), labelField(idI));
-    writeField(contactOut("idJ"), labelField(idJ));
-    writeField(contactOut("xiT"), vectorField(xiT));
-    writeField(contactOut("xiR"), vectorField(xiR));
+        partner[k].setSize(nCarried[k]);
+        xiT[k].setSize(nCarried[k]);
+        xiR[k].setSize(nCarried[k]);
+        nCarried[k] = 0;
+    }
+    for (const suspension::KeyedContact& c : contacts)
+    {
+        const label k = entryOf.at(c.lo);
+        const label m = nCarried[k]++;
+        partner[k][m] = label(c.hi);
+        xiT[k][m] = toFoam(c.state.xiT);
+        xiR[k][m] = toFoam(c.state.xiR);
+    }
+    writeFieldField(particleOut("contactId"), partner);
+    writeFieldField(particleOut("contactXiT"), xiT);
+    writeFieldField(particleOut("contactXiR"), xiR);
 
     // The solver's fields (written as regIOobjects, checked below)
     for (const regIOobject* io : fields)
@@ -1067,12 +1327,18 @@ void Foam::suspensionIO::write
     );
     dict.add("time", sim.time());
     dict.add("steps", steps);
-    dict.add("nParticles", label(p.size()));
-    dict.add("nContacts", idI.size());
+    dict.add("nParticles", returnReduce(n, sumOp<label>()));
+    dict.add("nContacts", returnReduce(label(contacts.size()), sumOp<label>()));
     dict.add("box", toFoam(sim.box().L()));
     dict.add("offset", sim.box().offset());
     dict.add("strain", sim.strain());
     dict.add("shearRate", sim.shearRate());
+    dict.add("writer", writer);     // (a string: it may start with a digit)
+    if (Pstream::parRun())
+    {
+        dict.add("processors", Pstream::nProcs());
+        dict.add("processor", Pstream::myProcNo());
+    }
 
     // The files of the time, whole and on disk, with their digests
     dictionary files;

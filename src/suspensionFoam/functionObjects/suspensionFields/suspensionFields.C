@@ -74,7 +74,10 @@ void Foam::functionObjects::suspensionFields::writeParticleFields() const
         symmTensorField& stress = tstress.ref().primitiveFieldRef();
         forAll(cells, i)
         {
-            stress[cells[i]] += symm(toFoam(S[i]));
+            if (cells[i] >= 0)
+            {
+                stress[cells[i]] += symm(toFoam(S[i]));
+            }
         }
         stress /= mesh_.V().field();
         tstress.ref().correctBoundaryConditions();
@@ -87,7 +90,10 @@ void Foam::functionObjects::suspensionFields::writeParticleFields() const
         scalarField& alpha = talpha.ref().primitiveFieldRef();
         forAll(cells, i)
         {
-            alpha[cells[i]] += sphereVolume(p.a[i]);
+            if (cells[i] >= 0)
+            {
+                alpha[cells[i]] += sphereVolume(p.a[i]);
+            }
         }
         alpha /= mesh_.V().field();
         talpha.ref().correctBoundaryConditions();

@@ -26,6 +26,10 @@ namespace functionObjects
 void Foam::functionObjects::suspensionOscillation::analyse(const bool report)
 {
     using Cycle = suspension::Oscillation::Cycle;
+    if (!Pstream::master())
+    {
+        return;     // the files are the master's (a parallel run)
+    }
 
     // The rows up to now (their Time column rounded: half a step of slack)
     const rheologySeries series

@@ -86,12 +86,22 @@ bool Foam::functionObjects::suspensionProfiles::write()
     scalarField Sxy(nBins_, Zero);
     for (std::size_t i = 0; i < p.size(); ++i)
     {
+        if (p.isGhost(i))
+        {
+            continue;       // another process's (a parallel run)
+        }
         const label bin = min(nBins_ - 1, label(p.x[i].y()/h));
         ++n[bin];
         volume[bin] += sphereVolume(p.a[i]);
         Ux[bin] += p.u[i].x();
         Sxy[bin] += 0.5*(S[i](0, 1) + S[i](1, 0));
     }
+
+    // The sums over the processes of a parallel run, on the master
+    Pstream::listCombineGather(n, plusEqOp<label>());
+    Pstream::listCombineGather(volume, plusEqOp<scalar>());
+    Pstream::listCombineGather(Ux, plusEqOp<scalar>());
+    Pstream::listCombineGather(Sxy, plusEqOp<scalar>());
 
     autoPtr<OFstream> osPtr = createFile("profiles", time_.value());
     if (!osPtr.valid())

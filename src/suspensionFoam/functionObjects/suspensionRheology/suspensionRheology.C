@@ -65,6 +65,14 @@ void Foam::functionObjects::suspensionRheology::writeFileHeader
 
 bool Foam::functionObjects::suspensionRheology::summarise(const bool report)
 {
+    bool precise = Pstream::master() && summariseHere(report);
+    Pstream::scatter(precise);
+    return precise;
+}
+
+
+bool Foam::functionObjects::suspensionRheology::summariseHere(const bool report)
+{
     file().flush();
     const ambientFlow& flow = suspensionCloud::lookup(mesh_, name()).flow();
     if (!flow.programme().constant())
@@ -346,7 +354,7 @@ bool Foam::functionObjects::suspensionRheology::write()
         << tab << cloud.steps()
         << tab << cloud.meanDeltaT()
         << tab << sim.velocityFluctuation()
-        << tab << label(sim.pairs().nPairs());
+        << tab << returnReduce(label(sim.pairs().nPairs()), sumOp<label>());
     if (const suspension::ImplicitEuler* implicit = sim.implicit())
     {
         os  << tab << label(implicit->statistics().iterations)
