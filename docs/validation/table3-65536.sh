@@ -72,8 +72,8 @@ keepRestart()
     if (
         cd "$dir" && tar -cJf "$kept/$1/restart.tar.xz.part" constant system \
             postProcessing log.* $(ls wallSeconds 2> /dev/null) "$latest/uniform" \
-            "$latest/lagrangian/suspensionContacts" \
-            "$latest"/lagrangian/suspension/{x,d,U,omega,F,T,dUdt,dOmegadt,origId} setUpDone
+            "$latest"/lagrangian/suspension/{x,d,U,omega,F,T,dUdt,dOmegadt,origId} \
+            "$latest"/lagrangian/suspension/{contactId,contactXiT,contactXiR} setUpDone
     ); then
         mv "$kept/$1/restart.tar.xz.part" "$kept/$1/restart.tar.xz" \
      && echo "$dir: write $latest kept in $kept/$1/restart.tar.xz"

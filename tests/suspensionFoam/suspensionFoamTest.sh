@@ -112,6 +112,10 @@
 #               contact history) and the rheology rows are the uninterrupted
 #               serial run's to 1e-9; the same chain at writePrecision 10
 #               warns that decomposePar and reconstructPar rounded the state
+#   parallelSteadyState
+#               over 8 strain units, the steady etaR of 3 packings on 2
+#               processes is that of the same 3 serially within the error
+#               bars (their scatter), and not bitwise
 #   parallelRepeat
 #               the same decomposed run twice: bitwise the same files
 #   parallelFailure
@@ -1727,6 +1731,42 @@ parallelRestart)
                 || fail "no warning of the rounded state at writePrecision 10"
         fi
     done
+    ;;
+
+parallelSteadyState)
+    # Over 8 strain units the decomposed run leaves the serial trajectory
+    # (round-off grows) but keeps its statistics: the steady etaR of 3
+    # packings (seeds 1-3) on 2 processes against the same 3 serially, the
+    # means within 3 standard errors of their difference (from the runs'
+    # scatter: at N = 100 a run's own block error bar is too small)
+    steady()
+    {
+        awk '$1 == "etaR" && NF > 5 { print $2 }' \
+            "$work/$1/postProcessing/rheology/0/rheologySummary.dat"
+    }
+    for seed in 1 2 3; do
+        softDenseCase s$seed
+        setEntry s$seed $properties population/seed $seed
+        setEntry s$seed $properties contact/stiffness 1e5
+        setEntry s$seed $properties integration/integrator implicitEuler
+        setEntry s$seed system/controlDict endTime 8
+        setEntry s$seed system/controlDict writeInterval 800
+        inCase s$seed makeSuspension
+        cp -r "$work/s$seed" "$work/p$seed"
+        decomposeDict p$seed 2 1
+        inCase p$seed decomposePar
+        runParallel p$seed 2
+        runCase s$seed
+        echo "$(steady s$seed) $(steady p$seed)"
+    done > "$work/etaR"
+    cat "$work/etaR"
+    awk '{ s[NR] = $1; p[NR] = $2; ms += $1/3; mp += $2/3; if ($1 == $2) same = 1 }
+         END {
+             for (k = 1; k <= 3; ++k) { vs += (s[k] - ms)^2/2; vp += (p[k] - mp)^2/2 }
+             d = ms - mp; e = sqrt(vs/3 + vp/3)
+             printf "parallelSteadyState: etaR serial %.3f, 2 processes %.3f, difference %.3f +/- %.3f\n", ms, mp, d, e
+             exit !(d*d <= 9*e*e && !same && NR == 3)
+         }' "$work/etaR" || fail "the steady etaR of 2 processes is not the serial one"
     ;;
 
 parallelRepeat)

@@ -27,6 +27,13 @@ Description
     suspensionIO::selectStartTime), or from a new random packing of the
     population if the start time holds none.
 
+    Parallel: decomposePar (system/decomposeParDict: method simple, n
+    (1 ny nz); the particles go with their cells), mpirun -np P
+    wavyShearFoam -parallel, reconstructPar. The particles are decomposed
+    in slabs in y and z, each spanning the box in x, and migrate between
+    processes with their contact history; the results are the serial
+    run's to round-off (docs/parallel.md).
+
     The suspension (Foam::suspensionCloud) is registered in the mesh as
     "suspension"; function objects find it by
     mesh.lookupObject<suspensionCloud>("suspension").
@@ -36,7 +43,8 @@ Description
     (what a restart reads, with the sizes and digests of the time's files:
     a time is complete or has no state). A failure (a non-finite value, a
     runaway overlap, an unconverged solve, any engine error) stops the run
-    with the cause and the last good state on disk (suspensionCloud.H). The rest is written by the function objects of
+    with the cause and the last good state on disk (suspensionCloud.H).
+    The rest is written by the function objects of
     libsuspensionFunctionObjects selected in system/controlDict:
     suspensionRheology (postProcessing/<name>/<startTime>/rheology.dat),
     suspensionProfiles (postProcessing/<name>/<time>/profiles.dat) and

@@ -19,7 +19,11 @@ Description
 
     Typical sequence: makeSuspension -boxOnly; blockMesh; makeSuspension.
     The solver packs a new suspension itself when the start time holds
-    none; makeSuspension makes the initial state visible beforehand.
+    none; makeSuspension makes the initial state visible beforehand. A
+    decomposed case: makeSuspension then decomposePar, or decomposePar
+    (the mesh) then mpirun -np P makeSuspension -parallel, which packs the
+    whole population on every process alike and writes each process's
+    slab: the same particles either way.
 
 Usage
     \b makeSuspension [OPTION]

@@ -1,11 +1,14 @@
 // The cost of a decomposed run (not a test): Table 1 FR spheres (radii 1
-// and 1.4, equal volumes, phi = 0.5, lubrication and frictional contacts),
-// the same packing on every process, decomposed in P slabs in y; the time
+// and 1.4, equal volumes, phi = 0.5, lubrication and frictional contacts)
+// or Table 3 (radii 1 and 3, V2/V1 = 0.25, phi = 0.5, every force of the
+// paper, the attraction to 4 a0: suspensionBenchmark -case table3), the
+// same packing on every process, decomposed in P slabs in y; the time
 // per step, the part of it spent in communication (every Communicator
 // call, waits included), the halo (ghosts per owned particle) and the bytes
 // sent per step, the largest over the processes. One CSV row on the master:
 //     mpirun -np P parallelBenchmark -parallel [-N 8000] [-steps 20]
-//         [-integrator implicitEuler|velocityVerlet] [-header]
+//         [-case table1|table3] [-integrator implicitEuler|velocityVerlet]
+//         [-header]
 // Without -parallel, the serial run (P = 1). docs/performance/parallel.sh
 // pairs it with the threaded run.
 #include "pstreamCommunicator.H"
@@ -77,11 +80,12 @@ int main(int argc, char* argv[])
     Foam::argList::addOption("N", "label", "particles (8000)");
     Foam::argList::addOption("steps", "label", "timed steps (20)");
     Foam::argList::addOption("integrator", "word", "implicitEuler or velocityVerlet");
+    Foam::argList::addOption("case", "word", "table1 (default) or table3");
     Foam::argList::addBoolOption("header", "print the CSV header only");
     Foam::argList args(argc, argv);
     if (args.found("header"))
     {
-        std::cout << "P,threads,integrator,N,steps,s_per_step,comm_s_per_step,"
+        std::cout << "case,P,threads,integrator,N,steps,s_per_step,comm_s_per_step,"
                      "comm_fraction,ghosts_per_owned,MB_sent_per_step,cg_iterations\n";
         return 0;
     }
@@ -93,14 +97,27 @@ int main(int argc, char* argv[])
     const TimedCommunicator comm(pstream);
     const int P = comm.size();
     const double rho = 1e-3;
-    const ForceModels models = test::lubricatedContacts(0.05, 4e5, 1.0);
+    const std::string caseName = args.opt<Foam::word>("case", "table1");
+    if (caseName != "table1" && caseName != "table3")
+    {
+        std::cerr << "parallelBenchmark: -case takes table1 or table3\n";
+        return 2;
+    }
+    const bool table3 = caseName == "table3";
+    const ForceModels models =
+        table3 ? test::allModels(4) : test::lubricatedContacts(0.05, 4e5, 1.0);
     RandomPacking::Params pp;
     pp.phi = 0.5;
     pp.seed = 1;
     pp.reach = models.interactionGap() + Simulation::Params().skin;
     const RandomPacking::Result packed = RandomPacking(pp).pack
     (
-        SizeDistribution::bidisperse(1.0, 1.4, 1.0).radii(N), rho
+        (
+            table3
+          ? SizeDistribution::bidisperse(1.0, 3.0, 0.25)
+          : SizeDistribution::bidisperse(1.0, 1.4, 1.0)
+        ).radii(N),
+        rho
     );
     Particles mine;
     const Particles& all = packed.particles;
@@ -142,7 +159,7 @@ int main(int argc, char* argv[])
     pstream.max(worst, 4);
     if (comm.rank() == 0)
     {
-        std::cout << P << ',' << omp_get_max_threads() << ',' << integrator << ','
+        std::cout << caseName << ',' << P << ',' << omp_get_max_threads() << ',' << integrator << ','
                   << N << ',' << steps << ',' << worst[0] << ',' << worst[1] << ','
                   << worst[1]/worst[0] << ',' << worst[2] << ',' << worst[3] << ','
                   << cg/steps << '\n';
