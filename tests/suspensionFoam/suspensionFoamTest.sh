@@ -116,6 +116,9 @@
 #               over 8 strain units, the steady etaR of 3 packings on 2
 #               processes is that of the same 3 serially within the error
 #               bars (their scatter), and not bitwise
+#   parallelIncompleteTime
+#               the latest time incomplete on one processor is set aside on
+#               every one, and the run continues from the time before
 #   parallelRepeat
 #               the same decomposed run twice: bitwise the same files
 #   parallelFailure
@@ -1770,6 +1773,32 @@ parallelSteadyState)
          }' "$work/etaR" || fail "the steady etaR of 2 processes is not the serial one"
     ;;
 
+parallelIncompleteTime)
+    # A time incomplete on one processor (its state lost) is set aside on
+    # every processor, and the run continues from the latest time complete
+    # on all
+    softDenseCase c
+    inCase c makeSuspension
+    decomposeDict c 2 1
+    inCase c decomposePar
+    runParallel c 2
+    rm "$work/c/processor1/0.1/uniform/suspensionState"
+    setEntry c system/controlDict endTime 0.15
+    runParallel c 2
+    log=$work/c/log.$solver.2
+    grep -q "^\[1\] Time 0.1 is incomplete (no uniform/suspensionState" "$log" \
+        || fail "processor1 did not set 0.1 aside"
+    grep -q "^\[0\] Time 0.1 is incomplete (complete here, not on every processor)" "$log" \
+        || fail "processor0 did not set 0.1 aside"
+    grep -q "stored suspension of .*processor0/0.05/uniform" "$log" \
+        || fail "the run did not continue from 0.05"
+    for q in 0 1; do
+        [ -d "$work/c/processor$q/0.1.incomplete" ] || fail "no processor$q/0.1.incomplete"
+        grep -q "^files" "$work/c/processor$q/0.15/uniform/suspensionState" \
+            || fail "no complete state at 0.15 on processor$q"
+    done
+    ;;
+
 parallelRepeat)
     softDenseCase c
     inCase c makeSuspension
@@ -1804,7 +1833,7 @@ parallelFailure)
     for q in 0 1; do
         end=$(cd "$work/c/processor$q" && ls -d 0.* | sort -g | tail -1)
         [ "$end" = "$last" ] || fail "processor$q ends at $end, not $last"
-        grep -q "^nParticles *$N;" "$work/c/processor$q/$last/uniform/suspensionState" \
+        grep -q "^files" "$work/c/processor$q/$last/uniform/suspensionState" \
             || fail "processor$q: no complete state at $last"
     done
     # A run to just after it continues from it

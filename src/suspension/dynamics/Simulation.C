@@ -418,6 +418,17 @@ void Simulation::start
 }
 
 
+void Simulation::redistribute()
+{
+    if (domain_)
+    {
+        const ForceSummary stepSummary = summary_;
+        start(time_, true, shear());
+        summary_ = stepSummary;
+    }
+}
+
+
 void Simulation::flowChanged()
 {
     // Chosen again as for a run started in this flow
@@ -483,6 +494,12 @@ void Simulation::step(double dt)
     }
     catch (const std::exception& err)
     {
+        // Anything but a SimulationError may be this process's alone in a
+        // decomposed run: it propagates as it is (Description)
+        if (domain_ && !dynamic_cast<const SimulationError*>(&err))
+        {
+            throw;
+        }
         failure = stepName(dt) + ": " + err.what();
     }
     if (!failure.empty())

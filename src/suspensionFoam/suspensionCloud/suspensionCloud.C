@@ -68,7 +68,30 @@ bool Foam::suspensionCloud::startsFromStored(const Time& runTime)
     }
 
     const suspensionIO::stored s = suspensionIO::check(runTime.timePath());
-    if (s.state == suspensionIO::stored::incomplete)
+
+    // A parallel run starts alike on every process: from the suspension
+    // every processor holds complete, or from a new packing if none holds
+    // any part of one
+    const bool incomplete = s.state == suspensionIO::stored::incomplete;
+    const bool complete = s.state == suspensionIO::stored::complete;
+    if (returnReduce(incomplete, orOp<bool>()) && !incomplete)
+    {
+        FatalErrorInFunction
+            << "The start time " << runTime.timeName() << " is incomplete on"
+            << " another processor (its log says why); startFrom latestTime"
+            << " starts from the latest time complete on all" << nl
+            << exit(FatalError);
+    }
+    if (!incomplete && returnReduce(complete, orOp<bool>()) != complete)
+    {
+        FatalErrorInFunction
+            << "The start time " << runTime.timeName() << " holds a"
+            << " suspension on some processors only (this one: "
+            << (complete ? "complete" : "none") << "): decompose a complete"
+            << " time of the whole case again (decomposePar)" << nl
+            << exit(FatalError);
+    }
+    if (incomplete)
     {
         const fileName stateFile =
             runTime.timePath()/"uniform"/suspensionIO::stateName;
@@ -242,6 +265,18 @@ void Foam::suspensionCloud::checkSetup(const scalar aMax) const
                 << " negative stress shears the other way)" << nl
                 << exit(FatalIOError);
         }
+    }
+
+    // A flow known on the mesh only is sampled at the ghosts too, which lie
+    // outside this processor's mesh
+    if (Pstream::parRun() && flow_->bounds() != boundBox::greatBox)
+    {
+        const dictionary& flowDict = properties_.ambientFlowDict();
+        FatalIOErrorInFunction(flowDict)
+            << "The ambient flow " << flowDict.name() << " (type "
+            << flow_->type() << ") is known on the mesh only: it runs on one"
+            << " process (with threads), not decomposed" << nl
+            << exit(FatalIOError);
     }
 
     // A flow the solver selected must know the particle box (its periodic
@@ -444,6 +479,25 @@ void Foam::suspensionCloud::failed(const std::string& cause)
         << exit(FatalError);
 
     // FatalError has thrown (throwExceptions) or exited
+    std::abort();
+}
+
+
+void Foam::suspensionCloud::failedHere(const std::string& cause)
+{
+    if (!Pstream::parRun())
+    {
+        failed(cause);
+    }
+    // Thrown on this process alone: the others cannot join the collectives
+    // of a restore and a write, so every process stops (FatalError aborts
+    // them all) with the times on disk as they are
+    FatalErrorInFunction
+        << cause.c_str() << nl
+        << "    This error was raised on processor " << Pstream::myProcNo()
+        << " alone, so the processes cannot agree on the last good state:"
+        << " it is not written; the times written so far are intact" << nl
+        << exit(FatalError);
     std::abort();
 }
 
@@ -749,6 +803,21 @@ Foam::suspensionCloud::suspensionCloud
     }
     start(start_.time, restart_);
 
+    // A start that was never stepped, separated by a serial run only
+    if
+    (
+        Pstream::parRun() && restart_ && start_.steps == 0
+     && start_.nContacts == 0 && sim_->summary().maxOverlap > 0
+    )
+    {
+        FatalIOErrorInFunction(start_.file)
+            << "The spheres of " << start_.file << " overlap (by up to "
+            << sim_->summary().maxOverlap << " of the smaller radius): a"
+            << " serial run separates them before its first step; a"
+            << " decomposed one does not. Run the serial case to its first"
+            << " write time, then decompose that" << nl << exit(FatalIOError);
+    }
+
     reportStart();
 
     if (!restart_)
@@ -845,10 +914,17 @@ void Foam::suspensionCloud::evolve()
             written_ = false;
         }
         sim_->advance(runTime_.deltaTValue());
+        // Each particle to the process whose slab (and mesh) holds it now,
+        // for the writes and the function objects of this time
+        sim_->redistribute();
+    }
+    catch (const suspension::SimulationError& err)
+    {
+        failed(err.what());
     }
     catch (const std::exception& err)
     {
-        failed(err.what());
+        failedHere(err.what());
     }
     flow_->setShearRate(sim_->shearRate());
     meanDeltaT_ = runTime_.deltaTValue()/(sim_->steps() - before);
@@ -875,9 +951,13 @@ bool Foam::suspensionCloud::correctFlow()
         const suspension::NonStopArithmetic nonStop;
         sim_->flowChanged();
     }
-    catch (const std::exception& err)
+    catch (const suspension::SimulationError& err)
     {
         failed(err.what());
+    }
+    catch (const std::exception& err)
+    {
+        failedHere(err.what());
     }
     written_ = false;
     sim_->checkpoint(lastGood_);

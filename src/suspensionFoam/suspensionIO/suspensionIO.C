@@ -25,6 +25,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <unordered_map>
@@ -118,9 +119,13 @@ label processorOf(const fileName& timeDir)
 {
     const word dir = timeDir.path().name();
     label q = -1;
-    if (dir.size() > 9 && dir.compare(0, 9, "processor") == 0)
+    if
+    (
+        dir.size() > 9 && dir.compare(0, 9, "processor") == 0
+     && !readLabel(dir.substr(9), q)
+    )
     {
-        readLabel(dir.substr(9), q);
+        q = -1;
     }
     return q;
 }
@@ -677,8 +682,10 @@ bool Foam::suspensionIO::found(const Time& runTime)
 
 void Foam::suspensionIO::selectStartTime(const argList& args)
 {
+    // The times of this process's case (processor<q> in a parallel run),
+    // the controls of the whole case
     const fileName casePath = args.path();
-    const fileName controlFile = casePath/"system"/"controlDict";
+    const fileName controlFile = args.globalPath()/"system"/"controlDict";
     if (!isFile(controlFile))
     {
         return;     // Time says what is missing
@@ -711,34 +718,47 @@ void Foam::suspensionIO::selectStartTime(const argList& args)
 
     if (startFrom == "latestTime")
     {
-        // In a parallel run, the latest time complete on every processor
+        // In a parallel run, the latest time complete on every processor:
+        // each takes the earliest of their latest, until they agree
         label latest = latestComplete(times.size() - 1);
         const scalar none = -VGREAT;
-        const scalar mine = latest < 0 ? none : times[latest].value();
-        const scalar common = returnReduce(mine, minOp<scalar>());
-        if (returnReduce(mine, maxOp<scalar>()) == none)
+        const auto value = [&](const label i)
+        {
+            return i < 0 ? none : times[i].value();
+        };
+        if (returnReduce(value(latest), maxOp<scalar>()) == none)
         {
             return;     // the cloud says what the start time holds
         }
-        while (latest >= 0 && times[latest].value() > common)
+        for (;;)
         {
-            latest = latestComplete(latest - 1);
-        }
-        const bool found = latest >= 0 && times[latest].value() == common;
-        if (!returnReduce(found, andOp<bool>()))
-        {
-            FatalErrorInFunction
-                << "The processors of " << casePath.path() << " hold no"
-                << " time that is complete on all of them"
-                << (common == none ? "" : " (the latest on one is " + Foam::name(common) + ")")
-                << ": decompose a complete time of the whole case again"
-                << " (decomposePar)" << nl << exit(FatalError);
+            const scalar common = returnReduce(value(latest), minOp<scalar>());
+            if (common == none)
+            {
+                FatalErrorInFunction
+                    << "A processor of " << args.globalPath() << " holds no"
+                    << " complete time that the others hold: decompose a"
+                    << " complete time of the whole case again (decomposePar)"
+                    << nl << exit(FatalError);
+            }
+            while (value(latest) > common)
+            {
+                latest = latestComplete(latest - 1);
+            }
+            if (returnReduce(value(latest) == common, andOp<bool>()))
+            {
+                break;
+            }
         }
         for (label i = times.size() - 1; i > latest; --i)
         {
             const fileName dir = dirOf(i);
             stored s = check(dir);
-            if (s.state == stored::absent)
+            if (s.state == stored::complete)
+            {
+                s.reason = "complete here, not on every processor";
+            }
+            else if (s.state == stored::absent)
             {
                 // OpenFOAM writes uniform/time first: a write stopped
                 // before the cloud, or before any file
@@ -770,11 +790,20 @@ void Foam::suspensionIO::selectStartTime(const argList& args)
                     << aside << ": " << systemError().c_str() << nl
                     << exit(FatalError);
             }
-            Info<< "Time " << times[i].name() << " is incomplete ("
+            // (in a parallel run each process says why of its own)
+            OStringStream line;
+            line<< "Time " << times[i].name() << " is incomplete ("
                 << s.reason.c_str() << "): moved to " << aside.name()
                 << " (nothing deleted); starting from "
-                << times[latest].name() << ", the latest complete time"
-                << nl << endl;
+                << times[latest].name() << ", the latest complete time";
+            if (Pstream::parRun())
+            {
+                Pout<< line.str().c_str() << nl << endl;
+            }
+            else
+            {
+                Info<< line.str().c_str() << nl << endl;
+            }
         }
         return;
     }
@@ -853,6 +882,32 @@ Foam::suspensionIO::state Foam::suspensionIO::readState(const Time& runTime)
             << "Entry 'box' = " << s.box << " in " << s.file
             << " must have positive lengths" << nl << exit(FatalIOError);
     }
+    // The processes of a parallel run hold the state of one suspension
+    if (Pstream::parRun())
+    {
+        scalarList lo
+        ({
+            s.time, scalar(s.steps), scalar(s.nParticles), scalar(s.nContacts),
+            s.box.x(), s.box.y(), s.box.z(), s.offset, s.strain, s.shearRate
+        });
+        scalarList hi(lo);
+        const scalarList mine(lo);
+        Pstream::listCombineGather(lo, minEqOp<scalar>());
+        Pstream::listCombineScatter(lo);
+        Pstream::listCombineGather(hi, maxEqOp<scalar>());
+        Pstream::listCombineScatter(hi);
+        if (lo != hi)
+        {
+            FatalIOErrorInFunction(dict)
+                << "The state " << s.file << " (time, steps, nParticles,"
+                << " nContacts, box, offset, strain, shearRate: " << mine
+                << ") is not that of the other processors, which range from "
+                << lo << " to " << hi << ": their directories come from"
+                << " different runs. Decompose a time of the whole case"
+                << " again (decomposePar)" << nl << exit(FatalIOError);
+        }
+    }
+
     // A time directory holds the state of its own time
     if (mag(s.time - runTime.value()) > 0.5*runTime.deltaTValue())
     {
@@ -1192,6 +1247,29 @@ void Foam::suspensionIO::write
     const fileName timeDir = mesh.time().timePath();
     const fileName stateFile = timeDir/"uniform"/stateName;
 
+    // decomposePar links a processor's uniform to the case's (without
+    // -copyUniform): this processor's state goes in a folder of its own
+    try
+    {
+        namespace fs = std::filesystem;
+        const fs::path uniform(std::string(timeDir/"uniform"));
+        if (fs::is_symlink(uniform))
+        {
+            const fs::path copy(uniform.string() + ".copy");
+            fs::remove_all(copy);
+            fs::copy(fs::canonical(uniform), copy, fs::copy_options::recursive);
+            fs::remove(uniform);
+            fs::rename(copy, uniform);
+        }
+    }
+    catch (const std::filesystem::filesystem_error& err)
+    {
+        FatalErrorInFunction
+            << "Cannot make " << timeDir/"uniform" << " (a link to the"
+            << " case's) a folder of its own: " << err.what() << nl
+            << exit(FatalError);
+    }
+
     // A time written before (by an earlier run) is no longer complete
     if (isFile(stateFile, false) && !rm(stateFile))
     {
@@ -1245,6 +1323,11 @@ void Foam::suspensionIO::write
     {
         return particleFile(mesh, name, IOobject::NO_READ);
     };
+    // (an empty cloud writes no particle fields of its own)
+    if (n == 0)
+    {
+        writeField(particleOut("origId"), labelField());
+    }
     const auto ownedField = [&](const std::vector<Vec3>& v)
     {
         vectorField f(n);
