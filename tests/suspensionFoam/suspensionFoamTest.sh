@@ -127,7 +127,9 @@
 #               each, and the run continues from it
 #   parallelPacking
 #               makeSuspension -parallel packs the decomposed case: the run
-#               is the one from the serial packing decomposed
+#               is the one from the serial packing decomposed; into a time
+#               whose uniform decomposePar linked to the case's, each
+#               process writes a state of its own
 #   parallelInput
 #               a decomposeParDict the slabs cannot follow (method, n) or a
 #               mesh they do not fit is a FatalIOError naming the file and
@@ -1862,6 +1864,18 @@ parallelPacking)
     [ -s "$work/serial.x" ] || fail "no packing"
     sameNumbers "$work/c.x" "$work/serial.x" 1e-12 || fail "the packings differ"
     expectSameParticles c 0.1 serial 1e-12
+    # A time decomposePar linked (each processor's uniform a link to the
+    # case's): every process writes a state of its own, the case's stays
+    rm -r "$work/c"/processor* "$work/c/0/lagrangian" "$work/c/0/uniform/suspensionState"
+    inCase c decomposePar -time 0
+    [ -L "$work/c/processor0/0/uniform" ] || fail "decomposePar did not link uniform"
+    runParallel c 2 makeSuspension
+    [ ! -e "$work/c/0/uniform/suspensionState" ] || fail "a process wrote into the case's uniform"
+    for q in 0 1; do
+        [ ! -L "$work/c/processor$q/0/uniform" ] || fail "processor$q/0/uniform is still a link"
+        grep -q "^files" "$work/c/processor$q/0/uniform/suspensionState" \
+            || fail "no complete state in processor$q/0"
+    done
     ;;
 
 parallelInput)
