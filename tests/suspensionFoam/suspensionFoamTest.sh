@@ -120,7 +120,8 @@
 #               the latest time incomplete on one processor is set aside on
 #               every one, and the run continues from the time before
 #   parallelRepeat
-#               the same decomposed run twice: bitwise the same files
+#               the same decomposed run twice, the second restarted from
+#               the processors' middle time: bitwise the same files
 #   parallelFailure
 #               an overlap running away on one process stops every process
 #               (no hang) with the last good state written and complete on
@@ -1802,18 +1803,27 @@ parallelIncompleteTime)
     ;;
 
 parallelRepeat)
+    # The same decomposed run twice, the second stopped at 0.05 and
+    # restarted from the processors' 0.05: bitwise the same
     softDenseCase c
     inCase c makeSuspension
     decomposeDict c 2 1
     inCase c decomposePar
     cp -r "$work/c" "$work/d"
     runParallel c 2
+    setEntry d system/controlDict endTime 0.05
     runParallel d 2
+    setEntry d system/controlDict endTime 0.1
+    runParallel d 2
+    grep -q "stored suspension of .*processor0/0.05/uniform" "$work/d/log.$solver.2" \
+        || fail "the second run did not restart from 0.05"
     for f in "$work"/c/processor*/0.1/lagrangian/suspension/* \
-        "$work"/c/processor*/0.1/uniform/suspensionState \
-        "$work"/c/postProcessing/rheology/0/rheology.dat; do
+        "$work"/c/processor*/0.1/uniform/suspensionState; do
         cmp -s "$f" "$work/d/${f#"$work"/c/}" || fail "${f#"$work"/c/} differs"
     done
+    diff <(awk '!/^#/ && $1 > 0.05' "$work/c/postProcessing/rheology/0/rheology.dat") \
+         <(awk '!/^#/' "$work/d/postProcessing/rheology/0.05/rheology.dat") > /dev/null \
+        || fail "the rheology rows after the restart differ"
     ;;
 
 parallelFailure)
