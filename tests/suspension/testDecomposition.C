@@ -130,6 +130,91 @@ TEST(Decomposition, ImplicitRunsGiveTheSerialTrajectory)
 }
 
 
+namespace
+{
+    //- Simple shear that one rank knows only within `margin` of its slab
+    //  (NaN beyond), as a flow on a decomposed mesh knows its processor's
+    //  cells: the ghosts must take their owners' samples
+    class SlabShear final : public AmbientFlow
+    {
+        const ShearFlow shear_;
+        double lo_[2], hi_[2], L_[2], margin_;
+
+        //- Periodic distance of c from [lo, hi) on a circle of length L
+        static double away(double c, double lo, double hi, double L)
+        {
+            const double d = c < lo ? lo - c : c >= hi ? c - hi : 0;
+            return std::min(d, L - (hi - lo) - d);
+        }
+
+    public:
+        SlabShear(int rank, const Domain::Layout& layout, const Vec3& L, double margin)
+        :
+            shear_(1.0),
+            margin_(margin)
+        {
+            const int q[2] = {rank % layout.ny, rank/layout.ny};
+            const int n[2] = {layout.ny, layout.nz};
+            for (int k = 0; k < 2; ++k)
+            {
+                L_[k] = L[k + 1];
+                lo_[k] = q[k]*L_[k]/n[k];
+                hi_[k] = (q[k] + 1)*L_[k]/n[k];
+            }
+        }
+
+        FlowSample sample(const Vec3& x, double gammaDot) const override
+        {
+            for (int k = 0; k < 2; ++k)
+            {
+                if (away(x[k + 1], lo_[k], hi_[k], L_[k]) > margin_)
+                {
+                    FlowSample nan;
+                    nan.U.setConstant(std::numeric_limits<double>::quiet_NaN());
+                    nan.gradU.setConstant(std::numeric_limits<double>::quiet_NaN());
+                    return nan;
+                }
+            }
+            return shear_.sample(x, gammaDot);
+        }
+        double shearRate(double t) const override { return shear_.shearRate(t); }
+        double meanShearRate(double t0, double t1) const override
+        {
+            return shear_.meanShearRate(t0, t1);
+        }
+        double maxShearRate() const override { return shear_.maxShearRate(); }
+        bool shearRateChanges() const override { return false; }
+        double maxPeriodicGradient() const override { return shear_.maxPeriodicGradient(); }
+        bool sampledAnywhere() const override { return false; }
+    };
+}
+
+
+TEST(Decomposition, AFlowKnownOnEachSlabOnlyGivesTheSerialTrajectory)
+{
+    // Each rank samples its owned particles (within half a radius of its
+    // slab: they move between rebuilds) and its ghosts take their owners'
+    // samples: explicit and implicit steps, 2 and 2 x 2 ranks
+    const Vec3 L(12, 12, 12);
+    const Particles start = test::decompositionParticles(L, 300, 7);
+    for (const Integrator integrator : {Integrator::velocityVerlet, Integrator::implicitEuler})
+    {
+        SCOPED_TRACE(integrator == Integrator::velocityVerlet ? "velocityVerlet" : "implicitEuler");
+        const test::RunCase serialRun{20, 0.5, integrator, nullptr};
+        const test::RankOutcome serial = test::decomposedRun(start, L, nullptr, {}, serialRun);
+        for (const Domain::Layout layout : {Domain::Layout{2, 1}, Domain::Layout{2, 2}})
+        {
+            test::onRanks(layout.ny*layout.nz, [&](const Communicator& comm)
+            {
+                const SlabShear flow(comm.rank(), layout, L, 0.5);
+                const test::RunCase run{20, 0.5, integrator, &flow};
+                test::expectSerial(serial, test::decomposedRun(start, L, &comm, layout, run), comm, 1e-9);
+            });
+        }
+    }
+}
+
+
 TEST(Decomposition, AContactCrossingAProcessAndTheShearedBoundaryKeepsItsHistory)
 {
     // Two spheres in contact, thrown up in y together: the upper one

@@ -108,6 +108,29 @@ namespace
         }
         return contact < 0.5*others;
     }
+
+    //- A decomposed run's ghost samples: the owners' (Domain::refresh of
+    //  the FlowSample entries, as doubles); none in a serial run
+    ForceField::GhostSamples ghostSamples(const Domain* domain)
+    {
+        static_assert
+        (
+            sizeof(FlowSample) == 24*sizeof(double),
+            "FlowSample is 24 doubles, refreshed as such"
+        );
+        if (!domain)
+        {
+            return nullptr;
+        }
+        return [domain](std::vector<FlowSample>& samples)
+        {
+            domain->refresh
+            (
+                reinterpret_cast<double*>(samples.data()),
+                sizeof(FlowSample)/sizeof(double)
+            );
+        };
+    }
 }
 
 
@@ -129,7 +152,8 @@ Simulation::Simulation
     forces_
     (
         std::move(models),
-        domain_ ? domain_->distinctRadii(particles_.a) : particles_.a
+        domain_ ? domain_->distinctRadii(particles_.a) : particles_.a,
+        ghostSamples(domain_.get())
     ),
     radii_(radiusRange(particles_, domain_)),
     search_

@@ -113,9 +113,15 @@ namespace
 
 // * * * * * * * * * * * * * * * * Constructor * * * * * * * * * * * * * * * //
 
-ForceField::ForceField(ForceModels models, const std::vector<double>& radii)
+ForceField::ForceField
+(
+    ForceModels models,
+    const std::vector<double>& radii,
+    GhostSamples ghostSamples
+)
 :
     models_(std::move(models)),
+    ghostSamples_(std::move(ghostSamples)),
     farMask_(0),
     nearGap_(0),
     farGap_(0)
@@ -715,13 +721,39 @@ ForceSummary ForceField::run
             particleContribution[detail::IndexOf<M, ParticleModels>::value] =
                 contributionIndex(M::contribution);
         });
+        // A flow not known at the ghosts: the owned particles' samples
+        // first, the ghosts' from their owners
+        const bool fromOwners = !p.ghost.empty() && !flow.sampledAnywhere();
+        if (fromOwners)
+        {
+            if (!ghostSamples_)
+            {
+                throw std::logic_error
+                (
+                    "ForceField: ghosts, a flow not sampled anywhere, and no"
+                    " way to their owners' samples"
+                );
+            }
+            #pragma omp parallel for schedule(static) if(threaded(N))
+            for (std::size_t i = 0; i < N; ++i)
+            {
+                if (!p.ghost[i])
+                {
+                    ambient_[i] = flow.sample(p.x[i], box.shearRate());
+                }
+            }
+            ghostSamples_(ambient_);
+        }
         #pragma omp parallel for schedule(static) if(threaded(N))
         for (std::size_t b = 0; b < nB; ++b)
         {
             const BlockRange rows(b, N);
             for (std::size_t i = rows.begin; i < rows.end; ++i)
             {
-                const FlowSample& f = ambient_[i] = flow.sample(p.x[i], box.shearRate());
+                const FlowSample& f =
+                    fromOwners
+                  ? ambient_[i]
+                  : (ambient_[i] = flow.sample(p.x[i], box.shearRate()));
                 uRel_[i] = p.u[i] - f.U;
                 wRel_[i] = p.omega[i] - f.Omega();
                 Vec3 F = Vec3::Zero();
