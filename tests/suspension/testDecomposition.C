@@ -135,10 +135,12 @@ namespace
     //- Simple shear that one rank knows only within `margin` of its slab
     //  (NaN beyond), as a flow on a decomposed mesh knows its processor's
     //  cells: the ghosts must take their owners' samples
-    class SlabShear final : public AmbientFlow
+    class SlabShear final : public test::ForwardingFlow
     {
         const ShearFlow shear_;
         double lo_[2], hi_[2], L_[2], margin_;
+
+        const AmbientFlow& base() const override { return shear_; }
 
         //- Periodic distance of c from [lo, hi) on a circle of length L
         static double away(double c, double lo, double hi, double L)
@@ -177,14 +179,6 @@ namespace
             }
             return shear_.sample(x, gammaDot);
         }
-        double shearRate(double t) const override { return shear_.shearRate(t); }
-        double meanShearRate(double t0, double t1) const override
-        {
-            return shear_.meanShearRate(t0, t1);
-        }
-        double maxShearRate() const override { return shear_.maxShearRate(); }
-        bool shearRateChanges() const override { return false; }
-        double maxPeriodicGradient() const override { return shear_.maxPeriodicGradient(); }
         bool sampledAnywhere() const override { return false; }
     };
 }

@@ -367,11 +367,13 @@ namespace
     //  amplitude that can be changed (ShearFlow, eq. 17)
     class ChangingFlow
     :
-        public AmbientFlow
+        public test::ForwardingFlow
     {
         double gammaDot_;
         double Ly_;
         ShearFlow flow_;
+
+        const AmbientFlow& base() const override { return flow_; }
 
     public:
 
@@ -381,22 +383,6 @@ namespace
         {}
 
         void setAmplitude(double A) { flow_ = ShearFlow(gammaDot_, A, 1, Ly_); }
-
-        FlowSample sample(const Vec3& x, double gammaDot) const override
-        {
-            return flow_.sample(x, gammaDot);
-        }
-        double shearRate(double t) const override { return flow_.shearRate(t); }
-        double meanShearRate(double t0, double t1) const override
-        {
-            return flow_.meanShearRate(t0, t1);
-        }
-        double maxShearRate() const override { return flow_.maxShearRate(); }
-        bool shearRateChanges() const override { return false; }
-        double maxPeriodicGradient() const override
-        {
-            return flow_.maxPeriodicGradient();
-        }
     };
 }
 
