@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 #------------------------------------------------------------------------------
-# Every wavyShearFoam tutorial run serially (./Allrun) and on 2 processes
+# Every tutorial (wavyShearFoam and suspensionCoupledFoam) run serially
+# (./Allrun) and on 2 processes
 # (./Allrun-parallel: decomposePar, mpirun, reconstructPar) from the same
 # packing, over its first STEPS sampling intervals: the largest relative
 # difference of each rheology column and of the particles' x and u at the
@@ -38,6 +39,7 @@ for tutorial in "$root"/tutorials/*/*/; do
         foamDictionary -entry endTime -set "$end" "$c/system/controlDict" > /dev/null
         foamDictionary -entry writeInterval -set "$steps" "$c/system/controlDict" > /dev/null
         foamDictionary -entry writeControl -set timeStep "$c/system/controlDict" > /dev/null
+        foamDictionary -entry writeFormat -set ascii "$c/system/controlDict" > /dev/null
         start=$(date +%s.%N)
         if [ $mode = serial ]; then (cd "$c" && ./Allrun > /dev/null); else (cd "$c" && ./Allrun-parallel > /dev/null); fi
         awk -v s="$start" -v e="$(date +%s.%N)" 'BEGIN { printf "%.1f\n", e - s }' > "$c.seconds"

@@ -132,28 +132,58 @@ TEST(Decomposition, ImplicitRunsGiveTheSerialTrajectory)
 
 namespace
 {
-    //- Simple shear that one rank knows only within `margin` of its slab
-    //  (NaN beyond), as a flow on a decomposed mesh knows its processor's
-    //  cells: the ghosts must take their owners' samples
-    class SlabShear final : public test::ForwardingFlow
+    //- Simple shear carrying the particles up at a uniform speed (a
+    //  constant U_y is periodic): they cross the slabs' boundaries, and the
+    //  sheared one, all the time
+    class DriftingShear final : public test::ForwardingFlow
     {
         const ShearFlow shear_;
-        double lo_[2], hi_[2], L_[2], margin_;
 
         const AmbientFlow& base() const override { return shear_; }
 
-        //- Periodic distance of c from [lo, hi) on a circle of length L
+    public:
+        static constexpr double drift = 0.5;
+
+        DriftingShear() : shear_(1.0) {}
+
+        FlowSample sample(const Vec3& x, double gammaDot) const override
+        {
+            FlowSample s = shear_.sample(x, gammaDot);
+            s.U.y() += drift;
+            return s;
+        }
+    };
+
+    //- DriftingShear as one rank knows it: on its slab only (NaN beyond),
+    //  as a flow on a decomposed mesh knows its processor's cells
+    class SlabFlow final : public test::ForwardingFlow
+    {
+        const DriftingShear flow_;
+        double lo_[2], hi_[2], L_[2];
+
+        const AmbientFlow& base() const override { return flow_; }
+
+        //- Periodic distance of c from [lo, hi] on a circle of length L
         static double away(double c, double lo, double hi, double L)
         {
-            const double d = c < lo ? lo - c : c >= hi ? c - hi : 0;
+            const double d = c < lo ? lo - c : c > hi ? c - hi : 0;
             return std::min(d, L - (hi - lo) - d);
         }
 
+        bool known(const Vec3& x) const
+        {
+            for (int k = 0; k < 2; ++k)
+            {
+                if (away(x[k + 1], lo_[k], hi_[k], L_[k]) > 0)
+                {
+                    return false;
+                }
+            }
+            return true;
+        }
+
     public:
-        SlabShear(int rank, const Domain::Layout& layout, const Vec3& L, double margin)
-        :
-            shear_(1.0),
-            margin_(margin)
+        SlabFlow(int rank, const Domain::Layout& layout, const Vec3& L)
         {
             const int q[2] = {rank % layout.ny, rank/layout.ny};
             const int n[2] = {layout.ny, layout.nz};
@@ -167,41 +197,61 @@ namespace
 
         FlowSample sample(const Vec3& x, double gammaDot) const override
         {
-            for (int k = 0; k < 2; ++k)
+            if (!known(x))
             {
-                if (away(x[k + 1], lo_[k], hi_[k], L_[k]) > margin_)
-                {
-                    FlowSample nan;
-                    nan.U.setConstant(std::numeric_limits<double>::quiet_NaN());
-                    nan.gradU.setConstant(std::numeric_limits<double>::quiet_NaN());
-                    return nan;
-                }
+                FlowSample nan;
+                nan.U.setConstant(std::numeric_limits<double>::quiet_NaN());
+                nan.gradU.setConstant(std::numeric_limits<double>::quiet_NaN());
+                return nan;
             }
-            return shear_.sample(x, gammaDot);
+            return flow_.sample(x, gammaDot);
+        }
+        bool sampleHere(const Vec3& x, double gammaDot, FlowSample& s) const override
+        {
+            s = sample(x, gammaDot);
+            return known(x);
         }
         bool sampledAnywhere() const override { return false; }
     };
+
+    //- Two spheres in contact near the top of a box L, thrown up in y
+    //  together: the upper one crosses y = L (the Lees-Edwards boundary)
+    //  into the bottom slab within a few steps, before a rebuild
+    Particles crossingPair(const Vec3& L)
+    {
+        Particles p;
+        p.add(Vec3(6, L.y() - 0.004, 6), 1.0, test::decompositionRho, 0);
+        p.add(Vec3(6.2, L.y() - 0.004 - 1.985, 6), 1.0, test::decompositionRho, 1);
+        for (Vec3& u : p.u)
+        {
+            u = Vec3(0, 500, 0);
+        }
+        return p;
+    }
 }
 
 
 TEST(Decomposition, AFlowKnownOnEachSlabOnlyGivesTheSerialTrajectory)
 {
-    // Each rank samples its owned particles (within half a radius of its
-    // slab: they move between rebuilds) and its ghosts take their owners'
-    // samples: explicit and implicit steps, 2 and 2 x 2 ranks
+    // Each rank samples the particles on its slab, owned or ghost; an
+    // owned particle that left the slab since the last rebuild (the flow
+    // carries them across, and the skin lets them go a quarter radius) is
+    // sampled by the rank it moved to (its ghost there), and its ghosts
+    // take its sample: explicit and implicit steps, 2 and 2 x 2 ranks
     const Vec3 L(12, 12, 12);
     const Particles start = test::decompositionParticles(L, 300, 7);
+    const DriftingShear drifting;
     for (const Integrator integrator : {Integrator::velocityVerlet, Integrator::implicitEuler})
     {
         SCOPED_TRACE(integrator == Integrator::velocityVerlet ? "velocityVerlet" : "implicitEuler");
-        const test::RunCase serialRun{20, 0.5, integrator, nullptr};
+        const test::RunCase serialRun{20, 0.5, integrator, &drifting, 0.5};
         const test::RankOutcome serial = test::decomposedRun(start, L, nullptr, {}, serialRun);
         for (const Domain::Layout layout : {Domain::Layout{2, 1}, Domain::Layout{2, 2}})
         {
             test::onRanks(layout.ny*layout.nz, [&](const Communicator& comm)
             {
-                const SlabShear flow(comm.rank(), layout, L, 0.5);
-                const test::RunCase run{20, 0.5, integrator, &flow};
+                const SlabFlow flow(comm.rank(), layout, L);
+                const test::RunCase run{20, 0.5, integrator, &flow, 0.5};
                 test::expectSerial(serial, test::decomposedRun(start, L, &comm, layout, run), comm, 1e-9);
             });
         }
@@ -217,13 +267,7 @@ TEST(Decomposition, AContactCrossingAProcessAndTheShearedBoundaryKeepsItsHistory
     // processes and across the sheared boundary; its stretch, carried by
     // the lower id, is the serial run's, held once
     const Vec3 L(12, 12, 12);
-    Particles start;
-    start.add(Vec3(6, L.y() - 0.004, 6), 1.0, test::decompositionRho, 0);
-    start.add(Vec3(6.2, L.y() - 0.004 - 1.985, 6), 1.0, test::decompositionRho, 1);
-    for (Vec3& u : start.u)
-    {
-        u = Vec3(0, 500, 0);
-    }
+    const Particles start = crossingPair(L);
     const test::RunCase run{100, 0.5, Integrator::velocityVerlet, nullptr};
     const test::RankOutcome serial = test::decomposedRun(start, L, nullptr, {}, run);
     ASSERT_EQ(serial.nContacts, 1u);

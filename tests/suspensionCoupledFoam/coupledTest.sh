@@ -31,6 +31,13 @@
 #   incompleteFlow
 #                 a latest time whose Uprime is truncated is incomplete: the
 #                 restart sets it aside and writes it anew, bitwise as before
+#   parallel      decomposed on 2 processes in y (the mesh of 1 x 16 x 1
+#                 cells) and on 2 x 2 (2 x 16 x 2 cells), against the
+#                 serial run: particles, Uprime and sigmaPRelaxed at each
+#                 write, the amplitude and profile rows, to 1e-9
+#   parallelRestart
+#                 2 processes to 0.05, reconstructed, decomposed for 4 to
+#                 0.1, reconstructed: the uninterrupted serial run to 1e-9
 #   notPeriodic, unknownForce, badCouplingStrain, narrowKernel,
 #   meshNotSpanning, wrongFlow, halfStoredFlow
 #                 one bad input each: a FatalIOError naming the file and the
@@ -49,14 +56,17 @@ export OMP_WAIT_POLICY=PASSIVE
 here=$(cd "$(dirname "$0")" && pwd)
 source=$here/tiny
 work=$(mktemp -d "${TMPDIR:-/tmp}/coupledTest.XXXXXX")
-trap 'rm -rf "$work"' EXIT
+[ -n "${WSF_KEEP:-}" ] || trap 'rm -rf "$work"' EXIT
 solver=suspensionCoupledFoam
 . "$here/../caseTestFunctions.sh"
 
-# Copy the tiny case to $work/$1, mesh it, pack it
+# Copy the tiny case to $work/$1 (with the cells $2, "(nx ny nz)", and
+# the writePrecision $3, if given), mesh it, pack it
 newCase()
 {
     cp -r "$source" "$work/$1"
+    [ -z "${2:-}" ] || setBlocks "$1" "$2"
+    [ -z "${3:-}" ] || setEntry "$1" system/controlDict writePrecision "$3"
     (
         cd "$work/$1"
         makeSuspension -boxOnly > log.makeBox 2>&1
@@ -72,6 +82,35 @@ runCoupled()
 }
 
 values() { python3 "$here/fieldValues.py" "$@"; }
+
+# Cases $1 and $2 at times $3...: the particles, the flow's state (Uprime,
+# sigmaPRelaxed) and the profile rows the same to 1e-9, and the amplitude
+# rows of those times
+expectSameFlow()
+{
+    local a=$1 b=$2 t f
+    shift 2
+    for t in "$@"; do
+        expectSameParticles $a $t $b 1e-9
+        for f in Uprime sigmaPRelaxed; do
+            values "$work/$a/$t/$f" > "$work/$a.$t.$f"
+            values "$work/$b/$t/$f" > "$work/$b.$t.$f"
+            sameNumbers "$work/$a.$t.$f" "$work/$b.$t.$f" 1e-9 \
+                || fail "$f at $t of $a differs from $b's"
+        done
+        rows "$work/$a/postProcessing/coupling/$t/profile.dat" > "$work/$a.$t.profile"
+        rows "$work/$b/postProcessing/coupling/$t/profile.dat" > "$work/$b.$t.profile"
+        sameNumbers "$work/$a.$t.profile" "$work/$b.$t.profile" 1e-9 \
+            || fail "the profile at $t of $a differs from $b's"
+        cat "$work/$a"/postProcessing/coupling/*/amplitude.dat \
+            | awk -v t=$t '!/^#/ && ($1 - t)^2 < 1e-20' > "$work/$a.$t.amplitude"
+        awk -v t=$t '!/^#/ && ($1 - t)^2 < 1e-20' "$work/$b/postProcessing/coupling/0/amplitude.dat" \
+            > "$work/$b.$t.amplitude"
+        [ -s "$work/$b.$t.amplitude" ] || fail "no amplitude row at $t in $b"
+        sameNumbers "$work/$a.$t.amplitude" "$work/$b.$t.amplitude" 1e-9 \
+            || fail "the amplitude at $t of $a differs from $b's"
+    done
+}
 
 properties=constant/suspensionProperties
 coupling=constant/couplingProperties
@@ -219,6 +258,40 @@ restart|incompleteFlow)
     diff <(awk '!/^#/ && $1 > 0.05' "$work/a/postProcessing/coupling/0/amplitude.dat") \
          <(awk '!/^#/' "$work/b/postProcessing/coupling/0.05/amplitude.dat") > /dev/null \
         || fail "amplitude.dat rows differ"
+    ;;
+
+parallel)
+    for layout in "2 1" "2 2"; do
+        c=p${layout/ /x}
+        newCase $c "$([ "$layout" = "2 2" ] && echo "(2 16 2)" || echo "(1 16 1)")" 17
+        cp -r "$work/$c" "$work/$c.serial"
+        decomposeDict $c $layout
+        inCase $c decomposePar
+        runParallel $c $((${layout/ /*}))
+        inCase $c reconstructPar
+        runCoupled $c.serial
+        expectSameFlow $c $c.serial 0.05 0.1
+    done
+    ;;
+
+parallelRestart)
+    newCase a "" 17
+    cp -r "$work/a" "$work/a.serial"
+    runCoupled a.serial
+    setEntry a $control endTime 0.05
+    decomposeDict a 2 1
+    inCase a decomposePar
+    runParallel a 2
+    inCase a reconstructPar -latestTime
+    rm -r "$work/a"/processor*
+    setEntry a $control endTime 0.1
+    decomposeDict a 4 1
+    inCase a decomposePar -latestTime
+    runParallel a 4
+    grep -q "stored suspension of .*/0.05/uniform" "$work/a/log.$solver.4" \
+        || fail "the 4 processes did not continue from 0.05"
+    inCase a reconstructPar -latestTime
+    expectSameFlow a a.serial 0.1
     ;;
 
 notPeriodic)

@@ -108,6 +108,7 @@ Usage
 #include "coarseGraining.H"
 #include "inputChecks.H"
 #include "cyclicPolyPatch.H"
+#include "processorCyclicPolyPatch.H"
 
 #include <chrono>
 
@@ -118,8 +119,9 @@ namespace
 
 using namespace Foam;
 
-//- Every patch of the mesh cyclic, with a cyclic pair across each
-//  direction: else a FatalIOError naming the boundary file and the patch
+//- Every patch of the mesh cyclic (or, decomposed, between processors),
+//  with a cyclic pair across each direction (on some processor): else a
+//  FatalIOError naming the boundary file and the patch
 void checkPeriodic(const fvMesh& mesh)
 {
     const polyBoundaryMesh& patches = mesh.boundaryMesh();
@@ -127,7 +129,9 @@ void checkPeriodic(const fvMesh& mesh)
     bool across[3] = {false, false, false};
     for (const polyPatch& pp : patches)
     {
-        if (!isA<cyclicPolyPatch>(pp))
+        const bool periodic =
+            isA<cyclicPolyPatch>(pp) || isA<processorCyclicPolyPatch>(pp);
+        if (!periodic && !isA<processorPolyPatch>(pp))
         {
             FatalIOErrorInFunction(file)
                 << "Patch '" << pp.name() << "' of " << file << " is of type "
@@ -136,7 +140,7 @@ void checkPeriodic(const fvMesh& mesh)
                 << " cyclic pairs (blockMeshDict of tutorials/coupled/"
                 << "kolmogorov)" << nl << exit(FatalIOError);
         }
-        if (pp.size())
+        if (periodic && pp.size())
         {
             const vector n = cmptMag(pp.faceAreas()[0]/mag(pp.faceAreas()[0]));
             for (direction d = 0; d < 3; ++d)
@@ -147,7 +151,7 @@ void checkPeriodic(const fvMesh& mesh)
     }
     for (direction d = 0; d < 3; ++d)
     {
-        if (!across[d])
+        if (!returnReduce(across[d], orOp<bool>()))
         {
             FatalIOErrorInFunction(file)
                 << "The mesh of " << file << " has no cyclic pair across"
@@ -202,8 +206,9 @@ void checkFlow(const suspensionCloud& particles, const volVectorField& U)
 }
 
 
-//- The particles' stresslets and volumes spread onto the mesh; the
-//  relative difference of the field's integral from their sum
+//- The particles' stresslets and volumes spread onto the mesh (each
+//  processor's owned particles); the relative difference of the field's
+//  integral from their sum
 scalar coarseGrain
 (
     const suspensionCloud& particles,
@@ -215,17 +220,21 @@ scalar coarseGrain
     const suspension::Simulation& sim = particles.simulation();
     const suspension::Particles& p = sim.particles();
     const std::vector<suspension::Mat3>& S = particles.particleStresslets();
-    pointField x(label(p.size()));
-    symmTensorField Q(x.size());
-    scalarField V(x.size());
+    DynamicList<point> x(label(p.size()));
+    DynamicList<symmTensor> Q(x.capacity());
+    DynamicList<scalar> V(x.capacity());
     symmTensor total(Zero);
-    forAll(x, i)
+    for (std::size_t i = 0; i < p.size(); ++i)
     {
-        x[i] = toFoam(p.x[i]);
-        Q[i] = symm(toFoam(S[i]));
-        V[i] = sphereVolume(p.a[i]);
-        total += Q[i];
+        if (!p.isGhost(i))
+        {
+            x.append(toFoam(p.x[i]));
+            Q.append(symm(toFoam(S[i])));
+            V.append(sphereVolume(p.a[i]));
+            total += Q.last();
+        }
     }
+    reduce(total, sumOp<symmTensor>());
     kernel.spread(x, Q, sim.box().offset(), sigmaP);
     kernel.spread(x, V, sim.box().offset(), alphaP);
     return
@@ -289,8 +298,6 @@ int main(int argc, char *argv[])
         "Dense suspension of rigid spheres in a mean flow that answers the"
         " particle stress (two-way coupled Stokes mixture)"
     );
-    argList::noParallel();
-
     #include "setRootCase.H"
 
     // An incomplete latest time (a write stopped by a kill or a crash) is
@@ -310,6 +317,7 @@ int main(int argc, char *argv[])
     if (!flowStored)
     {
         sigmaPRelaxed = mean(sigmaP);
+        sigmaPRelaxed.correctBoundaryConditions();
         #include "UEqn.H"
     }
     particles.correctFlow();
@@ -330,6 +338,7 @@ int main(int argc, char *argv[])
             (1 - std::exp(-runTime.deltaTValue()/couplingStrain))
            *(sigmaP - sigmaPRelaxed);
         sigmaPRelaxed += mean(sigmaP) - mean(sigmaPRelaxed);
+        sigmaPRelaxed.correctBoundaryConditions();
         times.add(times.coarseGraining);
 
         #include "UEqn.H"

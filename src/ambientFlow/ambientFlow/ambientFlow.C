@@ -1,5 +1,6 @@
 #include "ambientFlow.H"
 #include "volFields.H"
+#include "processorFvPatch.H"
 
 #include <cstdlib>
 
@@ -59,7 +60,8 @@ Foam::tmp<Foam::Field<Type>> evaluate
 
 //- Write the field f(points) evaluated at the cell centres and at the
 //  boundary face centres (calculated patches) of mesh, at the mesh's
-//  current time
+//  current time; a processor patch holds the neighbour cells' values
+//  (taken from the neighbour: a flow on the mesh knows them there only)
 template<class Type, class Function>
 void writeCellAndFaceField
 (
@@ -92,9 +94,32 @@ void writeCellAndFaceField
     fld.primitiveFieldRef() = f(C.primitiveField());
 
     auto& bf = fld.boundaryFieldRef();
+    const auto processor = [&mesh](const label patchi)
+    {
+        return isA<processorFvPatch>(mesh.boundary()[patchi]);
+    };
     forAll(bf, patchi)
     {
-        bf[patchi] == f(C.boundaryField()[patchi]);
+        if (!processor(patchi))
+        {
+            bf[patchi] == f(C.boundaryField()[patchi]);
+        }
+    }
+    const UPstream::commsTypes comms = UPstream::commsTypes::nonBlocking;
+    forAll(bf, patchi)
+    {
+        if (processor(patchi))
+        {
+            bf[patchi].initEvaluate(comms);
+        }
+    }
+    Pstream::waitRequests();
+    forAll(bf, patchi)
+    {
+        if (processor(patchi))
+        {
+            bf[patchi].evaluate(comms);
+        }
     }
 
     fld.write();

@@ -35,6 +35,29 @@ suspension::FlowSample Foam::ambientFlowAdapter::sample
 }
 
 
+bool Foam::ambientFlowAdapter::sampleHere
+(
+    const suspension::Vec3& x,
+    const double gammaDot,
+    suspension::FlowSample& s
+) const
+{
+    ambientFlowSample values;
+    if (!flow_.sample(toFoam(x), gammaDot, values))
+    {
+        return false;
+    }
+    s = toEigen(values);
+    return true;
+}
+
+
+bool Foam::ambientFlowAdapter::sampledAnywhere() const
+{
+    return !Pstream::parRun() || flow_.bounds() == boundBox::greatBox;
+}
+
+
 double Foam::ambientFlowAdapter::shearRate(const double t) const
 {
     return flow_.stressControlled() ? 0 : flow_.programme().value(t);

@@ -3,6 +3,9 @@
 #include "fvcLaplacian.H"
 #include "indexedOctree.H"
 #include "treeDataCell.H"
+#include "volPointInterpolation.H"
+#include "cellPointWeight.H"
+#include "syncTools.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -38,12 +41,101 @@ Foam::GeometricField<Type, Foam::fvPatchField, Foam::volMesh> unregistered
     );
 }
 
+//- The points of mesh on coupled patches (cyclic, processor) and on no
+//  other patch (of any processor)
+Foam::labelList coupledOnlyPoints(const Foam::polyMesh& mesh)
+{
+    using namespace Foam;
+    boolList coupled(mesh.nPoints(), false);
+    boolList other(mesh.nPoints(), false);
+    for (const polyPatch& pp : mesh.boundaryMesh())
+    {
+        boolList& on = pp.coupled() ? coupled : other;
+        for (const label pointi : pp.meshPoints())
+        {
+            on[pointi] = true;
+        }
+    }
+    syncTools::syncPointList(mesh, other, orEqOp<bool>(), false);
+    DynamicList<label> points;
+    forAll(coupled, pointi)
+    {
+        if (coupled[pointi] && !other[pointi])
+        {
+            points.append(pointi);
+        }
+    }
+    return labelList(std::move(points));
+}
+
+
+//- The values of the cell field psi at the points: volPointInterpolation's,
+//  but at the coupledPoints the inverse-distance mean over the cells
+//  around the point on every side (Description)
+template<class Type>
+Foam::Field<Type> pointValues
+(
+    const Foam::GeometricField<Type, Foam::fvPatchField, Foam::volMesh>& psi,
+    const Foam::labelList& coupledPoints
+)
+{
+    using namespace Foam;
+    const fvMesh& mesh = psi.mesh();
+    Field<Type> values
+    (
+        volPointInterpolation::New(mesh).interpolate(psi)().primitiveField()
+    );
+    scalarField weight(mesh.nPoints(), 0);
+    Field<Type> sum(mesh.nPoints(), Zero);
+    for (const label pointi : coupledPoints)
+    {
+        for (const label celli : mesh.pointCells()[pointi])
+        {
+            const scalar w =
+                1/mag(mesh.points()[pointi] - mesh.cellCentres()[celli]);
+            weight[pointi] += w;
+            sum[pointi] += w*psi[celli];
+        }
+    }
+    syncTools::syncPointList(mesh, weight, plusEqOp<scalar>(), scalar(0));
+    syncTools::syncPointList(mesh, sum, plusEqOp<Type>(), Type(Zero));
+    for (const label pointi : coupledPoints)
+    {
+        values[pointi] = sum[pointi]/weight[pointi];
+    }
+    return values;
+}
+
+
+//- The cell-point interpolate of the cell values psi and the point values
+//  psip with the weights w (interpolationCellPoint::interpolate)
+template<class Type>
+Type interpolate
+(
+    const Foam::cellPointWeight& w,
+    const Foam::UList<Type>& psi,
+    const Foam::UList<Type>& psip
+)
+{
+    const Foam::barycentric& b = w.weights();
+    const Foam::triFace& tri = w.faceVertices();
+    Type t = psi[w.cell()]*b[0];
+    t += psip[tri[0]]*b[1];
+    t += psip[tri[1]]*b[2];
+    t += psip[tri[2]]*b[3];
+    return t;
+}
+
 } // End anonymous namespace
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::meshInterpolation::fields::fields(const volVectorField& field)
+Foam::meshInterpolation::fields::fields
+(
+    const volVectorField& field,
+    const labelList& coupledPoints
+)
 :
     U(unregistered(field.name() + "Sampled", tmp<volVectorField>(field))),
     gradU(unregistered("grad(" + U.name() + ")", fvc::grad(U))),
@@ -52,10 +144,10 @@ Foam::meshInterpolation::fields::fields(const volVectorField& field)
     (
         unregistered("grad(" + laplacianU.name() + ")", fvc::grad(laplacianU))
     ),
-    interpolateU(U),
-    interpolateGradU(gradU),
-    interpolateLaplacianU(laplacianU),
-    interpolateGradLaplacianU(gradLaplacianU)
+    pointU(pointValues(U, coupledPoints)),
+    pointGradU(pointValues(gradU, coupledPoints)),
+    pointLaplacianU(pointValues(laplacianU, coupledPoints)),
+    pointGradLaplacianU(pointValues(gradLaplacianU, coupledPoints))
 {}
 
 
@@ -63,7 +155,13 @@ Foam::meshInterpolation::meshInterpolation(const volVectorField& U)
 :
     mesh_(U.mesh()),
     tolerance_(boundaryTolerance*mag(mesh_.bounds().span())),
-    fields_(new fields(U))
+    localBounds_
+    (
+        boundBox(mesh_.points(), false).min() - vector::uniform(tolerance_),
+        boundBox(mesh_.points(), false).max() + vector::uniform(tolerance_)
+    ),
+    coupledPoints_(coupledOnlyPoints(mesh_)),
+    fields_(new fields(U, coupledPoints_))
 {
     // Build now what the cell search and the cell-point interpolation
     // build on first use (OpenFOAM's demand-driven mesh data): the engine
@@ -82,6 +180,13 @@ Foam::meshInterpolation::meshInterpolation(const volVectorField& U)
 
 Foam::label Foam::meshInterpolation::cell(const point& p) const
 {
+    // Farther than tolerance_ outside the bounding box of this processor's
+    // points: in no cell, even moved by tolerance_ (most of the ghosts of
+    // a decomposed run)
+    if (!localBounds_.contains(p))
+    {
+        return -1;
+    }
     const label celli = mesh_.findCell(p);
     if (celli >= 0)
     {
@@ -111,7 +216,7 @@ void Foam::meshInterpolation::update(const volVectorField& U)
 {
     // The old copies go first: nothing of the same name lives twice
     fields_.reset();
-    fields_.reset(new fields(U));
+    fields_.reset(new fields(U, coupledPoints_));
 }
 
 
@@ -127,10 +232,12 @@ bool Foam::meshInterpolation::sample
         return false;
     }
     const fields& f = *fields_;
-    values.U = f.interpolateU.interpolate(p, celli);
-    values.gradU = f.interpolateGradU.interpolate(p, celli);
-    values.laplacianU = f.interpolateLaplacianU.interpolate(p, celli);
-    values.gradLaplacianU = f.interpolateGradLaplacianU.interpolate(p, celli);
+    const cellPointWeight w(mesh_, p, celli);
+    values.U = interpolate(w, f.U, f.pointU);
+    values.gradU = interpolate(w, f.gradU, f.pointGradU);
+    values.laplacianU = interpolate(w, f.laplacianU, f.pointLaplacianU);
+    values.gradLaplacianU =
+        interpolate(w, f.gradLaplacianU, f.pointGradLaplacianU);
     return true;
 }
 

@@ -405,6 +405,53 @@ void Domain::refresh(double* v, std::size_t width) const
 }
 
 
+void Domain::fillFromGhosts
+(
+    double* v,
+    std::size_t width,
+    std::vector<unsigned char>& known
+) const
+{
+    const int P = comm_.size();
+    std::vector<Buffer> send(P), receive;
+    for (int q = 0; q < P; ++q)
+    {
+        const std::vector<std::uint32_t>& ghosts = receiveIndex_[q];
+        for (std::uint32_t k = 0; k < ghosts.size(); ++k)
+        {
+            const std::uint32_t i = ghosts[k];
+            if (known[i])
+            {
+                put(send[q], k);
+                for (std::size_t c = 0; c < width; ++c)
+                {
+                    put(send[q], v[i*width + c]);
+                }
+            }
+        }
+    }
+    comm_.exchange(send, receive);
+    for (int q = 0; q < P; ++q)
+    {
+        std::size_t at = 0;
+        while (at < receive[q].size())
+        {
+            const std::uint32_t i = sendIndex_[q].at(get<std::uint32_t>(receive[q], at));
+            const bool take = !known[i];
+            for (std::size_t c = 0; c < width; ++c)
+            {
+                const double value = get<double>(receive[q], at);
+                if (take)
+                {
+                    v[i*width + c] = value;
+                }
+            }
+            known[i] = 1;
+        }
+    }
+}
+
+
 std::size_t Domain::nGhosts() const
 {
     std::size_t n = 0;

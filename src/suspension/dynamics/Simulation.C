@@ -109,26 +109,32 @@ namespace
         return contact < 0.5*others;
     }
 
-    //- A decomposed run's ghost samples: the owners' (Domain::refresh of
-    //  the FlowSample entries, as doubles); none in a serial run
+    //- A decomposed run's completion of the samples of a flow known on
+    //  each process's part: the owned particles not known here from their
+    //  ghosts (Domain::fillFromGhosts), then the ghosts from their owners
+    //  (Domain::refresh), of the FlowSample entries as doubles; none in a
+    //  serial run
     ForceField::GhostSamples ghostSamples(const Domain* domain)
     {
         static_assert
         (
             sizeof(FlowSample) == 24*sizeof(double),
-            "FlowSample is 24 doubles, refreshed as such"
+            "FlowSample is 24 doubles, exchanged as such"
         );
         if (!domain)
         {
             return nullptr;
         }
-        return [domain](std::vector<FlowSample>& samples)
+        return [domain]
+        (
+            std::vector<FlowSample>& samples,
+            std::vector<unsigned char>& known
+        )
         {
-            domain->refresh
-            (
-                reinterpret_cast<double*>(samples.data()),
-                sizeof(FlowSample)/sizeof(double)
-            );
+            double* v = reinterpret_cast<double*>(samples.data());
+            const std::size_t width = sizeof(FlowSample)/sizeof(double);
+            domain->fillFromGhosts(v, width, known);
+            domain->refresh(v, width);
         };
     }
 }

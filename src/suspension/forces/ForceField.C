@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 #include <utility>
 
@@ -721,8 +722,9 @@ ForceSummary ForceField::run
             particleContribution[detail::IndexOf<M, ParticleModels>::value] =
                 contributionIndex(M::contribution);
         });
-        // A flow not known at the ghosts: the owned particles' samples
-        // first, the ghosts' from their owners
+        // A flow known on this process's part only: every particle here
+        // sampled where it is known, then completed from the other
+        // processes (GhostSamples)
         const bool fromOwners = !p.ghost.empty() && !flow.sampledAnywhere();
         if (fromOwners)
         {
@@ -734,15 +736,24 @@ ForceSummary ForceField::run
                     " way to their owners' samples"
                 );
             }
+            known_.resize(N);
             #pragma omp parallel for schedule(static) if(threaded(N))
             for (std::size_t i = 0; i < N; ++i)
             {
-                if (!p.ghost[i])
+                known_[i] = flow.sampleHere(p.x[i], box.shearRate(), ambient_[i]);
+            }
+            ghostSamples_(ambient_, known_);
+            for (std::size_t i = 0; i < N; ++i)
+            {
+                if (!p.ghost[i] && !known_[i])
                 {
-                    ambient_[i] = flow.sample(p.x[i], box.shearRate());
+                    std::ostringstream msg;
+                    msg << "the ambient flow is not known at particle id "
+                        << p.id[i] << " at (" << p.x[i].transpose()
+                        << ") on any process";
+                    throw std::runtime_error(msg.str());
                 }
             }
-            ghostSamples_(ambient_);
         }
         #pragma omp parallel for schedule(static) if(threaded(N))
         for (std::size_t b = 0; b < nB; ++b)

@@ -1,4 +1,5 @@
 #include "blockGrid.H"
+#include "ListListOps.H"
 
 #include <algorithm>
 
@@ -38,7 +39,7 @@ Foam::blockGrid::blockGrid
     L_(box),
     edges_(),
     cellOf_(),
-    row_(),
+    index_(),
     rowVolume_()
 {
     const fileName meshDir =
@@ -75,10 +76,16 @@ Foam::blockGrid::blockGrid
         }
     }
 
+    // The planes of every processor's cells (in a parallel run each holds
+    // part of the grid)
     label n[3];
     for (direction d = 0; d < 3; ++d)
     {
-        edges_[d] = distinct(planes[d], tol);
+        List<scalarList> all(Pstream::nProcs());
+        all[Pstream::myProcNo()] = distinct(planes[d], tol);
+        Pstream::gatherList(all);
+        Pstream::scatterList(all);
+        edges_[d] = distinct(ListListOps::combine<scalarList>(all, accessOp<scalarList>()), tol);
         n[d] = edges_[d].size() - 1;
         if (mag(edges_[d].first()) > tol || mag(edges_[d].last() - L_[d]) > tol)
         {
@@ -91,17 +98,18 @@ Foam::blockGrid::blockGrid
         edges_[d].first() = 0;
         edges_[d].last() = L_[d];
     }
-    if (n[0]*n[1]*n[2] != nCells)
+    const label nTotal = returnReduce(nCells, sumOp<label>());
+    if (n[0]*n[1]*n[2] != nTotal)
     {
         FatalIOErrorInFunction(meshDir)
-            << "The " << nCells << " cells of the mesh in " << meshDir
+            << "The " << nTotal << " cells of the mesh in " << meshDir
             << " do not lie on one grid (" << n[0] << " x " << n[1] << " x "
             << n[2] << " planes): " << need.c_str() << nl
             << exit(FatalIOError);
     }
 
-    cellOf_.setSize(nCells, -1);
-    row_.setSize(nCells);
+    cellOf_.setSize(nTotal, -1);
+    index_.setSize(nCells);
     rowVolume_.setSize(n[1], 0);
     forAll(cellBox, celli)
     {
@@ -118,8 +126,8 @@ Foam::blockGrid::blockGrid
               - e.begin()
             ) - 1;
         }
-        label& slot = cellOf_[ijk[0] + n[0]*(ijk[1] + n[1]*ijk[2])];
-        bool oneInterval = slot < 0;
+        const label g = ijk[0] + n[0]*(ijk[1] + n[1]*ijk[2]);
+        bool oneInterval = cellOf_[g] < 0;
         for (direction d = 0; d < 3; ++d)
         {
             oneInterval = oneInterval
@@ -133,10 +141,29 @@ Foam::blockGrid::blockGrid
                 << " of its planes: " << need.c_str() << nl
                 << exit(FatalIOError);
         }
-        slot = celli;
-        row_[celli] = ijk[1];
+        cellOf_[g] = celli;
+        index_[celli] = g;
         rowVolume_[ijk[1]] += mesh_.V()[celli];
     }
+
+    // Each grid cell on one processor: the count above then leaves none out
+    labelList held(nTotal, 0);
+    for (const label g : index_)
+    {
+        held[g] = 1;
+    }
+    sumOverProcessors(held);
+    forAll(held, g)
+    {
+        if (held[g] != 1)
+        {
+            FatalIOErrorInFunction(meshDir)
+                << "Cell " << g << " of the grid of the mesh in " << meshDir
+                << " is held by " << held[g] << " processors: " << need.c_str()
+                << nl << exit(FatalIOError);
+        }
+    }
+    sumOverProcessors(rowVolume_);
 }
 
 

@@ -3,13 +3,25 @@
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 template<class Type>
+void Foam::blockGrid::sumOverProcessors(List<Type>& v)
+{
+    if (Pstream::parRun())
+    {
+        Pstream::listCombineGather(v, plusEqOp<Type>());
+        Pstream::listCombineScatter(v);
+    }
+}
+
+
+template<class Type>
 Foam::List<Type> Foam::blockGrid::rowMeans(const UList<Type>& f) const
 {
     List<Type> mean(n(1), Zero);
-    forAll(row_, celli)
+    forAll(index_, celli)
     {
-        mean[row_[celli]] += mesh_.V()[celli]*f[celli];
+        mean[row(celli)] += mesh_.V()[celli]*f[celli];
     }
+    sumOverProcessors(mean);
     forAll(mean, j)
     {
         mean[j] /= rowVolume_[j];
@@ -43,9 +55,9 @@ Foam::blockGrid::planeAverage
         )
     );
     Field<Type>& avg = tavg.ref().primitiveFieldRef();
-    forAll(row_, celli)
+    forAll(index_, celli)
     {
-        avg[celli] = mean[row_[celli]];
+        avg[celli] = mean[row(celli)];
     }
     tavg.ref().correctBoundaryConditions();
     return tavg;

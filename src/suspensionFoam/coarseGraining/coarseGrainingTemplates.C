@@ -12,8 +12,9 @@ void Foam::coarseGraining::spread
 ) const
 {
     const vector& L = grid_.box();
-    Field<Type>& q = field.primitiveFieldRef();
-    q = Zero;
+    // The amounts of each grid cell, over all processors: a kernel reaches
+    // cells of other processors
+    List<Type> amount(grid_.size(), Zero);
 
     DynamicList<label> ix, iy, iz;
     DynamicList<scalar> wx, wy, wz;
@@ -42,7 +43,7 @@ void Foam::coarseGraining::spread
                 {
                     forAll(ix, a)
                     {
-                        cells.append(grid_.cell(ix[a], iy[b], iz[c]));
+                        cells.append(grid_.index(ix[a], iy[b], iz[c]));
                         w.append(wx[a]*wy[b]*wz[c]);
                     }
                 }
@@ -55,8 +56,14 @@ void Foam::coarseGraining::spread
         }
         forAll(cells, k)
         {
-            q[cells[k]] += (w[k]/total)*Q[i];
+            amount[cells[k]] += (w[k]/total)*Q[i];
         }
+    }
+    grid_.sumOverProcessors(amount);
+    Field<Type>& q = field.primitiveFieldRef();
+    forAll(q, celli)
+    {
+        q[celli] = amount[grid_.index()[celli]];
     }
     q /= field.mesh().V().field();
     field.correctBoundaryConditions();

@@ -11,7 +11,9 @@
 #include <sys/resource.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <unordered_map>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * //
 
@@ -267,18 +269,6 @@ void Foam::suspensionCloud::checkSetup(const scalar aMax) const
         }
     }
 
-    // A flow known on the mesh only is sampled at the ghosts too, which lie
-    // outside this processor's mesh
-    if (Pstream::parRun() && flow_->bounds() != boundBox::greatBox)
-    {
-        const dictionary& flowDict = properties_.ambientFlowDict();
-        FatalIOErrorInFunction(flowDict)
-            << "The ambient flow " << flowDict.name() << " (type "
-            << flow_->type() << ") is known on the mesh only: it runs on one"
-            << " process (with threads), not decomposed" << nl
-            << exit(FatalIOError);
-    }
-
     // A flow the solver selected must know the particle box (its periodic
     // part lives in it)
     if (cmptMax(cmptMag(flow_->box() - L)) > tol)
@@ -524,8 +514,26 @@ void Foam::suspensionCloud::reportStart() const
         Info<< "new random packing, seed "
             << properties_.population().dict().get<label>("seed") << nl;
     }
+    // The owned particles of every processor
+    const suspension::Particles& p = sim.particles();
+    List<scalarList> radii(Pstream::nProcs());
+    DynamicList<scalar> mine(label(p.size()));
+    for (std::size_t i = 0; i < p.size(); ++i)
+    {
+        if (!p.isGhost(i))
+        {
+            mine.append(p.a[i]);
+        }
+    }
+    radii[Pstream::myProcNo()] = std::move(mine);
+    Pstream::gatherList(radii);
+    std::vector<double> all;
+    for (const scalarList& r : radii)
+    {
+        all.insert(all.end(), r.begin(), r.end());
+    }
     Info<< "    radii        "
-        << suspension::describeRadii(sim.particles().a).c_str()
+        << suspension::describeRadii(all).c_str()
         << (restart_ ? " (of the stored cloud)" : "") << nl
         << "    neighbours   cut-off R = 2 a_max + gap + skin = " << R
         << ", box = " << start_.box/R << " R" << nl
@@ -945,7 +953,22 @@ bool Foam::suspensionCloud::correctFlow()
     }
     // The stresslets of this time stay those of the flow the particles
     // moved in: what the solver spread, the function objects and the write
-    // see
+    // see. The engine continues in the new flow as from a restart, which
+    // re-sorts the particles (and, decomposed, makes the ghosts anew): the
+    // stresslets follow their owned particles (a ghost's is not kept)
+    std::unordered_map<std::int64_t, suspension::Mat3> SOf;
+    const bool haveS = SIndex_ == runTime_.timeIndex();
+    if (haveS)
+    {
+        const suspension::Particles& p = sim_->particles();
+        for (std::size_t i = 0; i < p.size(); ++i)
+        {
+            if (!p.isGhost(i))
+            {
+                SOf.emplace(p.id[i], S_[i]);
+            }
+        }
+    }
     try
     {
         const suspension::NonStopArithmetic nonStop;
@@ -958,6 +981,18 @@ bool Foam::suspensionCloud::correctFlow()
     catch (const std::exception& err)
     {
         failedHere(err.what());
+    }
+    if (haveS)
+    {
+        const suspension::Particles& p = sim_->particles();
+        S_.assign(p.size(), suspension::Mat3::Zero());
+        for (std::size_t i = 0; i < p.size(); ++i)
+        {
+            if (!p.isGhost(i))
+            {
+                S_[i] = SOf.at(p.id[i]);
+            }
+        }
     }
     written_ = false;
     sim_->checkpoint(lastGood_);

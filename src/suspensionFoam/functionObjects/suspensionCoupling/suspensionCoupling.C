@@ -206,6 +206,9 @@ bool Foam::functionObjects::suspensionCoupling::write()
         B += 2*V[celli]*Uprime[celli].x()*std::cos(k*y)/volume;
         F += 2*V[celli]*f[celli].x()*std::sin(k*y)/volume;
     }
+    reduce(A, sumOp<scalar>());
+    reduce(B, sumOp<scalar>());
+    reduce(F, sumOp<scalar>());
     const scalar etaEff = F != 0 ? F/(cloud.eta0()*k*k*A) : 0;
 
     // The particles' own mode of the shear stress, without the kernel
@@ -217,18 +220,33 @@ bool Foam::functionObjects::suspensionCoupling::write()
     scalar Sk = 0;
     scalar phik = 0;
     scalar Ap = 0;
+    label count = 0;
     for (std::size_t i = 0; i < p.size(); ++i)
     {
+        if (p.isGhost(i))
+        {
+            continue;
+        }
         const scalar y = p.x[i].y();
         const scalar c = std::cos(k*y);
         Sk += (S[i](0, 1) + S[i](1, 0))*c;
         phik += 2*sphereVolume(p.a[i])*c;
         Ap += 2*(p.u[i].x() - gammaDot*y)*std::sin(k*y);
+        ++count;
     }
-    Ap /= max(label(p.size()), label(1));
+    reduce(Sk, sumOp<scalar>());
+    reduce(phik, sumOp<scalar>());
+    reduce(Ap, sumOp<scalar>());
+    reduce(count, sumOp<label>());
+    Ap /= max(count, label(1));
     Sk /= L.x()*L.y()*L.z();
     phik /= L.x()*L.y()*L.z();
     const scalarField phi(grid_.rowMeans(alphaP.primitiveField()));
+    const scalar sigmaPxy =
+        gSum(V*sigmaP.primitiveField().component(symmTensor::XY)())/volume;
+    const scalar sigmaPRelaxedxy =
+        gSum(V*sigmaPRelaxed.primitiveField().component(symmTensor::XY)())
+       /volume;
 
     if (Pstream::master() && writeToFile())
     {
@@ -256,13 +274,11 @@ bool Foam::functionObjects::suspensionCoupling::write()
             }
             os  << endl;
         }
-        const scalar volumeInv = 1/volume;
         amplitudeFile_()
             << time_.value()
             << tab << A << tab << B << tab << F << tab << etaEff
             << tab << Ap << tab << Sk
-            << tab << volumeInv*gSum(V*sigmaP.primitiveField().component(symmTensor::XY)())
-            << tab << volumeInv*gSum(V*sigmaPRelaxed.primitiveField().component(symmTensor::XY)())
+            << tab << sigmaPxy << tab << sigmaPRelaxedxy
             << tab << phik << tab << min(phi) << tab << max(phi) << endl;
     }
 
