@@ -237,10 +237,30 @@ TEST(Decomposition, AFlowKnownOnEachSlabOnlyGivesTheSerialTrajectory)
     // owned particle that left the slab since the last rebuild (the flow
     // carries them across, and the skin lets them go a quarter radius) is
     // sampled by the rank it moved to (its ghost there), and its ghosts
-    // take its sample: explicit and implicit steps, 2 and 2 x 2 ranks
+    // take its sample: explicit and implicit steps, 2 and 2 x 2 ranks;
+    // then two spheres in a box twice as long in z, on 2 x 2 ranks of
+    // which two hold nothing, not even ghosts (they take part in the
+    // exchanges all the same)
     const Vec3 L(12, 12, 12);
     const Particles start = test::decompositionParticles(L, 300, 7);
     const DriftingShear drifting;
+    {
+        const Vec3 Lz(12, 12, 24);
+        const test::RunCase serialRun{100, 0.5, Integrator::velocityVerlet, &drifting, 0.5};
+        const test::RankOutcome serial = test::decomposedRun(crossingPair(Lz), Lz, nullptr, {}, serialRun);
+        test::onRanks(4, [&](const Communicator& comm)
+        {
+            const SlabFlow flow(comm.rank(), {2, 2}, Lz);
+            const test::RunCase run{100, 0.5, Integrator::velocityVerlet, &flow, 0.5};
+            const test::RankOutcome mine = test::decomposedRun(crossingPair(Lz), Lz, &comm, {2, 2}, run);
+            if (comm.rank() >= 2)
+            {
+                EXPECT_TRUE(mine.state.empty());
+                EXPECT_EQ(mine.ghosts, 0u);
+            }
+            test::expectSerial(serial, mine, comm, 1e-9);
+        });
+    }
     for (const Integrator integrator : {Integrator::velocityVerlet, Integrator::implicitEuler})
     {
         SCOPED_TRACE(integrator == Integrator::velocityVerlet ? "velocityVerlet" : "implicitEuler");

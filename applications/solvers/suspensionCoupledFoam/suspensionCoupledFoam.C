@@ -164,10 +164,32 @@ void checkPeriodic(const fvMesh& mesh)
 
 
 //- Whether the start time holds the flow's state: both fields, or neither
+//  (on every processor)
 bool storedFlow(IOobject& U, IOobject& sigma)
 {
     const bool hasU = U.typeHeaderOk<volVectorField>(true);
     const bool hasSigma = sigma.typeHeaderOk<volSymmTensorField>(true);
+
+    // Decomposed: each processor reads its own time, and all must agree
+    // (the flow is solved anew collectively, or not at all)
+    const IOobject* fields[2] = {&U, &sigma};
+    const bool here[2] = {hasU, hasSigma};
+    for (label k = 0; k < 2; ++k)
+    {
+        if
+        (
+            returnReduce(here[k], orOp<bool>())
+         != returnReduce(here[k], andOp<bool>())
+        )
+        {
+            FatalIOErrorInFunction(fields[k]->objectPath())
+                << "The start time holds " << fields[k]->name() << " on some"
+                << " processors only (" << fields[k]->objectPath()
+                << (here[k] ? " is there" : " is not") << "): decompose the"
+                << " time again" << nl << exit(FatalIOError);
+        }
+    }
+
     if (hasU != hasSigma)
     {
         const IOobject& missing = hasU ? sigma : U;

@@ -118,6 +118,10 @@ void Foam::ambientFlowAdapter::sampled
     ambientFlowSample values;
     for (std::size_t i = 0; i < particles.size(); ++i)
     {
+        if (particles.isGhost(i))
+        {
+            continue;
+        }
         const point x = toFoam(particles.x[i]);
         if (!flow_.samplePeriodic(x, values))
         {

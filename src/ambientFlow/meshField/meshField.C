@@ -86,7 +86,9 @@ bool Foam::meshField::correct()
          && values(field_.boundaryField()[patchi])
          == values(inUse.boundaryField()[patchi]);
     }
-    if (same)
+    // Collective: the processors decide together (the update and the
+    // engine's continuation in the new flow are)
+    if (returnReduce(same, andOp<bool>()))
     {
         return false;
     }

@@ -724,18 +724,19 @@ ForceSummary ForceField::run
         });
         // A flow known on this process's part only: every particle here
         // sampled where it is known, then completed from the other
-        // processes (GhostSamples)
-        const bool fromOwners = !p.ghost.empty() && !flow.sampledAnywhere();
+        // processes (GhostSamples: collective, so decided by the run, not
+        // by this process's particles, of which it may have none)
+        const bool fromOwners = ghostSamples_ && !flow.sampledAnywhere();
+        if (!ghostSamples_ && !p.ghost.empty() && !flow.sampledAnywhere())
+        {
+            throw std::logic_error
+            (
+                "ForceField: ghosts, a flow not sampled anywhere, and no"
+                " way to their owners' samples"
+            );
+        }
         if (fromOwners)
         {
-            if (!ghostSamples_)
-            {
-                throw std::logic_error
-                (
-                    "ForceField: ghosts, a flow not sampled anywhere, and no"
-                    " way to their owners' samples"
-                );
-            }
             known_.resize(N);
             #pragma omp parallel for schedule(static) if(threaded(N))
             for (std::size_t i = 0; i < N; ++i)
@@ -745,7 +746,7 @@ ForceSummary ForceField::run
             ghostSamples_(ambient_, known_);
             for (std::size_t i = 0; i < N; ++i)
             {
-                if (!p.ghost[i] && !known_[i])
+                if (!p.isGhost(i) && !known_[i])
                 {
                     std::ostringstream msg;
                     msg << "the ambient flow is not known at particle id "

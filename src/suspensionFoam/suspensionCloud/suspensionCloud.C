@@ -10,6 +10,7 @@
 #include <omp.h>
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -496,25 +497,8 @@ void Foam::suspensionCloud::reportStart() const
 {
     const suspension::Simulation& sim = *sim_;
     const suspension::TimeStepLimits& limits = sim.limits();
-    const scalar R = properties_.boxRule().range(sim.particles().maxRadius());
-    const scalar userDeltaT = properties_.simulationParams().deltaT;
-
-    properties_.report(Info);
-
-    Info<< "    start        ";
-    if (restart_)
-    {
-        Info<< "stored suspension of " << start_.file << " (time "
-            << start_.time << ", strain " << start_.strain << ", "
-            << start_.steps << " steps, "
-            << start_.nContacts << " contacts with history)" << nl;
-    }
-    else
-    {
-        Info<< "new random packing, seed "
-            << properties_.population().dict().get<label>("seed") << nl;
-    }
-    // The owned particles of every processor
+    // The radii of the owned particles of every processor (on the master,
+    // which reports)
     const suspension::Particles& p = sim.particles();
     List<scalarList> radii(Pstream::nProcs());
     DynamicList<scalar> mine(label(p.size()));
@@ -531,6 +515,28 @@ void Foam::suspensionCloud::reportStart() const
     for (const scalarList& r : radii)
     {
         all.insert(all.end(), r.begin(), r.end());
+    }
+    const scalar aMax =
+        all.empty()
+      ? sim.particles().maxRadius()
+      : *std::max_element(all.begin(), all.end());
+    const scalar R = properties_.boxRule().range(aMax);
+    const scalar userDeltaT = properties_.simulationParams().deltaT;
+
+    properties_.report(Info);
+
+    Info<< "    start        ";
+    if (restart_)
+    {
+        Info<< "stored suspension of " << start_.file << " (time "
+            << start_.time << ", strain " << start_.strain << ", "
+            << start_.steps << " steps, "
+            << start_.nContacts << " contacts with history)" << nl;
+    }
+    else
+    {
+        Info<< "new random packing, seed "
+            << properties_.population().dict().get<label>("seed") << nl;
     }
     Info<< "    radii        "
         << suspension::describeRadii(all).c_str()
@@ -578,7 +584,9 @@ void Foam::suspensionCloud::reportStart() const
     Info<< nl << "    threads      ";
     if (threads > 1 && !suspension::threaded(N))
     {
-        Info<< "1 (N = " << label(N) << " is below the "
+        Info<< "1 (N = " << label(N)
+            << (Pstream::parRun() ? " on the master, ghosts included," : "")
+            << " is below the "
             << label(suspension::parallelMinParticles()) << " particles of"
             << " the threaded loops; OMP_NUM_THREADS allows " << threads << ")";
     }
