@@ -131,6 +131,11 @@
 #               is the one from the serial packing decomposed; into a time
 #               whose uniform decomposePar linked to the case's, each
 #               process writes a state of its own
+#   parallelMeshSampled
+#               a flow known on the mesh only (meshSampled: the wavy shear
+#               sampled at the cells) on 2 processes gives the serial
+#               particles and rheology to 1e-9: each processor knows its
+#               own cells
 #   parallelInput
 #               a decomposeParDict the slabs cannot follow (method, n) or a
 #               mesh they do not fit is a FatalIOError naming the file and
@@ -1779,6 +1784,30 @@ parallelPacking)
         grep -q "^files" "$work/c/processor$q/0/uniform/suspensionState" \
             || fail "no complete state in processor$q/0"
     done
+    ;;
+
+parallelMeshSampled)
+    softDenseCase m
+    foamDictionary -entry ambientFlow -remove "$work/m/$properties" > /dev/null 2>&1 \
+        || fail "cannot remove ambientFlow"
+    printf '%s\n' "ambientFlow" "{" "    type meshSampled;" \
+        "    flow { type wavyShear; shearRate 1; amplitude 2; periods 1; }" "}" \
+        >> "$work/m/$properties"
+    setEntry m system/controlDict writePrecision 17
+    inCase m makeSuspension
+    cp -r "$work/m" "$work/m.serial"
+    decomposeDict m 2 1
+    inCase m decomposePar
+    runParallel m 2
+    grep -q "Selecting ambientFlow meshSampled" "$work/m/log.$solver.2" \
+        || fail "the parallel run did not sample the flow on the mesh"
+    inCase m reconstructPar
+    runCase m.serial
+    for t in 0.05 0.1; do
+        expectSameParticles m $t m.serial 1e-9
+    done
+    expectSameRheology "$work/m/postProcessing/rheology/0/rheology.dat" \
+        "$work/m.serial/postProcessing/rheology/0/rheology.dat" 1e-9
     ;;
 
 parallelInput)

@@ -97,11 +97,35 @@ bool Foam::functionObjects::suspensionProfiles::write()
         Sxy[bin] += 0.5*(S[i](0, 1) + S[i](1, 0));
     }
 
+    // The flow at the bins' centres, from the processors that know it (a
+    // flow on the mesh is known on each processor's cells: the mean over
+    // those that hold the point)
+    const auto centre = [&L, h](const label bin)
+    {
+        return point(0.5*L.x(), (bin + 0.5)*h, 0.5*L.z());
+    };
+    scalarField UinfX(nBins_, Zero);
+    scalarField shearRate(nBins_, Zero);
+    labelList knownBy(nBins_, Zero);
+    forAll(knownBy, bin)
+    {
+        ambientFlowSample values;
+        if (flow.sample(centre(bin), values))
+        {
+            UinfX[bin] = values.U.x();
+            shearRate[bin] = values.gradU.yx();
+            knownBy[bin] = 1;
+        }
+    }
+
     // The sums over the processes of a parallel run, on the master
     Pstream::listCombineGather(n, plusEqOp<label>());
     Pstream::listCombineGather(volume, plusEqOp<scalar>());
     Pstream::listCombineGather(Ux, plusEqOp<scalar>());
     Pstream::listCombineGather(Sxy, plusEqOp<scalar>());
+    Pstream::listCombineGather(UinfX, plusEqOp<scalar>());
+    Pstream::listCombineGather(shearRate, plusEqOp<scalar>());
+    Pstream::listCombineGather(knownBy, plusEqOp<label>());
 
     autoPtr<OFstream> osPtr = createFile("profiles", time_.value());
     if (!osPtr.valid())
@@ -130,20 +154,26 @@ bool Foam::functionObjects::suspensionProfiles::write()
 
     forAll(n, bin)
     {
-        const point centre(0.5*L.x(), (bin + 0.5)*h, 0.5*L.z());
-        const scalar shearRate = flow.localShearRate(centre);
-        const scalar sigmaXY = eta0*shearRate + Sxy[bin]/binVolume;
+        if (!knownBy[bin])
+        {
+            flow.notKnownAt
+            (
+                "the centre of profile bin " + Foam::name(bin), centre(bin)
+            );
+        }
+        const scalar rate = shearRate[bin]/knownBy[bin];
+        const scalar sigmaXY = eta0*rate + Sxy[bin]/binVolume;
 
-        os  << centre.y()
+        os  << centre(bin).y()
             << tab << n[bin]
             << tab << volume[bin]/binVolume
             << tab << (n[bin] ? Ux[bin]/n[bin] : 0)
-            << tab << flow.U(centre).x()
-            << tab << shearRate
+            << tab << UinfX[bin]/knownBy[bin]
+            << tab << rate
             << tab
             << (
-                   shearRate != 0
-                 ? sigmaXY/(eta0*shearRate)
+                   rate != 0
+                 ? sigmaXY/(eta0*rate)
                  : std::numeric_limits<scalar>::quiet_NaN()
                )
             << nl;
