@@ -134,8 +134,8 @@
 #   parallelMeshSampled
 #               a flow known on the mesh only (meshSampled: the wavy shear
 #               sampled at the cells) on 2 processes gives the serial
-#               particles and rheology to 1e-9: each processor knows its
-#               own cells
+#               particles, rheology and profiles to 1e-9: each processor
+#               knows its own cells
 #   parallelInput
 #               a decomposeParDict the slabs cannot follow (method, n) or a
 #               mesh they do not fit is a FatalIOError naming the file and
@@ -1805,6 +1805,9 @@ parallelMeshSampled)
     runCase m.serial
     for t in 0.05 0.1; do
         expectSameParticles m $t m.serial 1e-9
+        sameNumbers "$work/m/postProcessing/profiles/$t/profiles.dat" \
+            "$work/m.serial/postProcessing/profiles/$t/profiles.dat" 1e-9 \
+            || fail "profiles at $t"
     done
     expectSameRheology "$work/m/postProcessing/rheology/0/rheology.dat" \
         "$work/m.serial/postProcessing/rheology/0/rheology.dat" 1e-9

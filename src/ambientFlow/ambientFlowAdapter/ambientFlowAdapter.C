@@ -114,24 +114,29 @@ void Foam::ambientFlowAdapter::sampled
         return;
     }
 
-    // Rare: search again, in particle order, for the first one
+    // Rare: search again, in particle order, for the first one (an owned
+    // particle before a ghost)
     ambientFlowSample values;
-    for (std::size_t i = 0; i < particles.size(); ++i)
+    for (const bool ghosts : {false, true})
     {
-        if (particles.isGhost(i))
+        for (std::size_t i = 0; i < particles.size(); ++i)
         {
-            continue;
-        }
-        const point x = toFoam(particles.x[i]);
-        if (!flow_.samplePeriodic(x, values))
-        {
-            flow_.notKnownAt
-            (
-                "particle id " + Foam::name(particles.id[i])
-              + " (index " + Foam::name(label(i)) + " of "
-              + Foam::name(label(particles.size())) + ")",
-                x
-            );
+            if (particles.isGhost(i) != ghosts)
+            {
+                continue;
+            }
+            const point x = toFoam(particles.x[i]);
+            if (!flow_.samplePeriodic(x, values))
+            {
+                flow_.notKnownAt
+                (
+                    "particle id " + Foam::name(particles.id[i])
+                  + (ghosts ? ", a ghost," : "")
+                  + " (index " + Foam::name(label(i)) + " of "
+                  + Foam::name(label(particles.size())) + ")",
+                    x
+                );
+            }
         }
     }
 }

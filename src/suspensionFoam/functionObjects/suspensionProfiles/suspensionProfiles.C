@@ -97,24 +97,32 @@ bool Foam::functionObjects::suspensionProfiles::write()
         Sxy[bin] += 0.5*(S[i](0, 1) + S[i](1, 0));
     }
 
-    // The flow at the bins' centres, from the processors that know it (a
-    // flow on the mesh is known on each processor's cells: the mean over
-    // those that hold the point)
+    // The flow at the bins' centres, from the first processor that knows
+    // it (a flow on the mesh is known on each processor's cells; an
+    // analytic one on the master)
     const auto centre = [&L, h](const label bin)
     {
         return point(0.5*L.x(), (bin + 0.5)*h, 0.5*L.z());
     };
-    scalarField UinfX(nBins_, Zero);
-    scalarField shearRate(nBins_, Zero);
-    labelList knownBy(nBins_, Zero);
+    List<ambientFlowSample> values(nBins_);
+    labelList knownBy(nBins_, Pstream::nProcs());
     forAll(knownBy, bin)
     {
-        ambientFlowSample values;
-        if (flow.sample(centre(bin), values))
+        if (flow.sample(centre(bin), values[bin]))
         {
-            UinfX[bin] = values.U.x();
-            shearRate[bin] = values.gradU.yx();
-            knownBy[bin] = 1;
+            knownBy[bin] = Pstream::myProcNo();
+        }
+    }
+    Pstream::listCombineGather(knownBy, minEqOp<label>());
+    Pstream::listCombineScatter(knownBy);
+    scalarField UinfX(nBins_, Zero);
+    scalarField shearRate(nBins_, Zero);
+    forAll(knownBy, bin)
+    {
+        if (knownBy[bin] == Pstream::myProcNo())
+        {
+            UinfX[bin] = values[bin].U.x();
+            shearRate[bin] = values[bin].gradU.yx();
         }
     }
 
@@ -125,7 +133,6 @@ bool Foam::functionObjects::suspensionProfiles::write()
     Pstream::listCombineGather(Sxy, plusEqOp<scalar>());
     Pstream::listCombineGather(UinfX, plusEqOp<scalar>());
     Pstream::listCombineGather(shearRate, plusEqOp<scalar>());
-    Pstream::listCombineGather(knownBy, plusEqOp<label>());
 
     autoPtr<OFstream> osPtr = createFile("profiles", time_.value());
     if (!osPtr.valid())
@@ -154,21 +161,21 @@ bool Foam::functionObjects::suspensionProfiles::write()
 
     forAll(n, bin)
     {
-        if (!knownBy[bin])
+        if (knownBy[bin] == Pstream::nProcs())
         {
             flow.notKnownAt
             (
                 "the centre of profile bin " + Foam::name(bin), centre(bin)
             );
         }
-        const scalar rate = shearRate[bin]/knownBy[bin];
+        const scalar rate = shearRate[bin];
         const scalar sigmaXY = eta0*rate + Sxy[bin]/binVolume;
 
         os  << centre(bin).y()
             << tab << n[bin]
             << tab << volume[bin]/binVolume
             << tab << (n[bin] ? Ux[bin]/n[bin] : 0)
-            << tab << UinfX[bin]/knownBy[bin]
+            << tab << UinfX[bin]
             << tab << rate
             << tab
             << (
