@@ -436,7 +436,8 @@ void Domain::fillFromGhosts
         std::size_t at = 0;
         while (at < receive[q].size())
         {
-            const std::uint32_t i = sendIndex_[q].at(get<std::uint32_t>(receive[q], at));
+            const std::uint32_t k = get<std::uint32_t>(receive[q], at);
+            const std::uint32_t i = sendIndex_[q].at(k);
             const bool take = !known[i];
             for (std::size_t c = 0; c < width; ++c)
             {

@@ -85,7 +85,11 @@ Foam::blockGrid::blockGrid
         all[Pstream::myProcNo()] = distinct(planes[d], tol);
         Pstream::gatherList(all);
         Pstream::scatterList(all);
-        edges_[d] = distinct(ListListOps::combine<scalarList>(all, accessOp<scalarList>()), tol);
+        edges_[d] = distinct
+        (
+            ListListOps::combine<scalarList>(all, accessOp<scalarList>()),
+            tol
+        );
         n[d] = edges_[d].size() - 1;
         if (mag(edges_[d].first()) > tol || mag(edges_[d].last() - L_[d]) > tol)
         {
