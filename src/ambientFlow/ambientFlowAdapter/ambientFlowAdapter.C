@@ -24,14 +24,14 @@ suspension::FlowSample Foam::ambientFlowAdapter::sample
     const double gammaDot
 ) const
 {
-    ambientFlowSample values;
-    if (!flow_.sample(toFoam(x), gammaDot, values))
+    suspension::FlowSample s;
+    if (!sampleHere(x, gammaDot, s))
     {
         // Threads may not stop the run: sampled() does, after the loop
         notKnown_.store(true, std::memory_order_relaxed);
         return suspension::FlowSample();
     }
-    return toEigen(values);
+    return s;
 }
 
 

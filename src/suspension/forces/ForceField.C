@@ -727,14 +727,6 @@ ForceSummary ForceField::run
         // processes (GhostSamples: collective, so decided by the run, not
         // by this process's particles, of which it may have none)
         const bool fromOwners = ghostSamples_ && !flow.sampledAnywhere();
-        if (!ghostSamples_ && !p.ghost.empty() && !flow.sampledAnywhere())
-        {
-            throw std::logic_error
-            (
-                "ForceField: ghosts, a flow not sampled anywhere, and no"
-                " way to their owners' samples"
-            );
-        }
         if (fromOwners)
         {
             known_.resize(N);
