@@ -57,7 +57,7 @@ Usage
         [-criticalLoad 0.1] [-writePacking DIR]
         [-integrator velocityVerlet|implicitEuler|overdamped]
         [-off lubrication|contact|rolling|repulsion|attraction]...
-        [-preshear 1] [-roofline]
+        [-preshear 1] [-roofline] [-safety 0.2] [-rollingFriction 1]
 
     Threads: OMP_NUM_THREADS. The particles start from a random
     non-overlapping packing; a few steps are taken before timing.
@@ -66,6 +66,9 @@ Usage
     F_CL. -writePacking DIR writes the packing before any step as
     DIR/box.dat (Lx Ly Lz), DIR/radii.dat (one radius per line) and
     DIR/positions.dat (x y z per line), for other codes to start from.
+    -safety sets the automatic step's fraction of its stability limit
+    (Simulation::Params, also for the shearing of -preshear);
+    -rollingFriction sets mu_r of table3's rolling springs (default mu_C).
 \*---------------------------------------------------------------------------*/
 
 #include "core/Memory.H"
@@ -76,6 +79,7 @@ Usage
 #include "packing/SizeDistribution.H"
 
 #include <omp.h>
+#include <optional>
 #include <sys/resource.h>
 
 #include <algorithm>
@@ -147,6 +151,8 @@ namespace
         std::string contactModel = "frictionalContact";
         double criticalLoad = 0.1;
         double preshear = 0;                // strain before the timing
+        double safety = Simulation::Params().safety;
+        std::optional<double> rollingFriction;  // mu_r, unset: mu_C
         std::string packingDir;
         bool brute = false;
         bool header = false;
@@ -187,6 +193,8 @@ namespace
             else if (a == "-criticalLoad") o.criticalLoad = std::stod(value());
             else if (a == "-writePacking") o.packingDir = value();
             else if (a == "-preshear") o.preshear = std::stod(value());
+            else if (a == "-safety") o.safety = std::stod(value());
+            else if (a == "-rollingFriction") o.rollingFriction = std::stod(value());
             else if (a == "-contactModel")
             {
                 o.contactModel = value();
@@ -270,6 +278,7 @@ namespace
             if (t3 && o.on("rolling"))
             {
                 c.kr = 0.1*c.kn;
+                c.muR = o.rollingFriction;
             }
             if (o.contactModel == CriticalLoadContact::typeName)
             {
@@ -507,6 +516,7 @@ int main(int argc, char** argv)
     Simulation::Params sp;
     sp.rho = rho;
     sp.integrator = o.integrator;
+    sp.safety = o.safety;
     Simulation::Checkpoint sheared;
     if (o.preshear > 0)
     {
