@@ -257,6 +257,21 @@ namespace
             std::cerr << "suspensionBenchmark: -case must be table3 or table1\n";
             std::exit(2);
         }
+        if
+        (
+            o.rollingFriction
+         && (o.caseName != "table3" || !o.on("rolling") || !o.on("contact"))
+        )
+        {
+            std::cerr << "suspensionBenchmark: -rollingFriction needs table3's"
+                " rolling springs (-case table3, rolling and contact not -off)\n";
+            std::exit(2);
+        }
+        if (!(o.safety > 0 && o.safety <= 1))
+        {
+            std::cerr << "suspensionBenchmark: -safety must be in (0, 1]\n";
+            std::exit(2);
+        }
         return o;
     }
 
