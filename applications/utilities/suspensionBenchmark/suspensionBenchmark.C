@@ -267,11 +267,6 @@ namespace
                 " rolling springs (-case table3, rolling and contact not -off)\n";
             std::exit(2);
         }
-        if (!(o.safety > 0 && o.safety <= 1))
-        {
-            std::cerr << "suspensionBenchmark: -safety must be in (0, 1]\n";
-            std::exit(2);
-        }
         return o;
     }
 
