@@ -19,6 +19,7 @@
 #include <fstream>
 #include <map>
 #include <random>
+#include <set>
 #include <sstream>
 #include <string>
 #include <type_traits>
@@ -329,11 +330,17 @@ namespace
         NeighbourSearch search;
         PairList near;
 
-        FixtureLoop(const Fixture& fixture, const Combination& c, Stencil stencil)
+        FixtureLoop
+        (
+            const Fixture& fixture,
+            const Combination& c,
+            Stencil stencil,
+            ForceField::PairPasses passes = ForceField::PairPasses::specialised
+        )
         :
             fx(fixture),
             p(fixture.particles),
-            field(c.models(), p.a),
+            field(c.models(), p.a, nullptr, passes),
             search({field.nearGap(), skin, stencil, field.farGap()}),
             near()
         {
@@ -352,6 +359,24 @@ namespace
         {
             const Forces f = evaluateAll(field, p, fx.box, fx.flow, near, search.far());
             return reordered(f, p.id, fx.particles.id);
+        }
+
+        //- evaluate() of the non-hydrodynamic forces (an implicit
+        //  integrator's): their forces, and the linearised contacts
+        Forces evaluateLinearised(std::vector<LinearisedContact>& contacts)
+        {
+            Forces f;
+            ForceField::Output out;
+            out.F = &f.F;
+            out.T = &f.T;
+            out.contacts = &contacts;
+            f.summary = field.evaluate
+            (
+                p, fx.box, fx.flow, near, search.far(), out,
+                ForceField::Forces::nonHydrodynamic
+            );
+            f.S.assign(p.size(), Mat3::Zero());
+            return f;
         }
 
         //- advance() by dt: F and T (S zero) in the fixture's order, and
@@ -949,6 +974,107 @@ TEST(ForceField, GoldenForcesOfEveryCombination)
         }
         expectClose(f, ref, tol, fx.particles.id, name);
     }
+}
+
+
+namespace
+{
+    //- Whether the models of mask are one of the sets
+    template<class... Ms>
+    unsigned maskOfSet(ModelList<Ms...>)
+    {
+        return ((1u << registryIndex<Ms>()) | ... | 0u);
+    }
+
+    template<class... Sets>
+    bool isSpecialised(unsigned mask, std::tuple<Sets...>)
+    {
+        return ((mask == maskOfSet(Sets())) || ...);
+    }
+
+    bool sameLinearised(const LinearisedContact& a, const LinearisedContact& b)
+    {
+        return a.i == b.i && a.j == b.j && a.n == b.n && a.ai == b.ai
+            && a.aj == b.aj && a.dUinf == b.dUinf && a.dy == b.dy
+            && a.k.kn == b.k.kn && a.k.gammaN == b.k.gammaN
+            && a.k.kt == b.k.kt && a.k.kr == b.k.kr;
+    }
+}
+
+
+TEST(ForceField, GenericPassesGiveTheSpecialisedBits)
+{
+    // A set of models with a pass of its own (SpecialisedNearSets,
+    // SpecialisedFarSets) runs it; any other runs the generic pass, which
+    // skips the models that are off. Both sum in registry order, so every
+    // combination, forced through the generic passes, gives the same bits:
+    // forces, torques, stresslets, their sums, contact statistics, the
+    // histories advance() keeps, and an implicit integrator's linearised
+    // contacts. The golden test above holds both paths to its values.
+    const Fixture fx = makeFixture();
+    const std::size_t lub = registryIndex<Lubrication>();
+    std::set<unsigned> specialisedNear, specialisedFar;
+    int generic = 0;
+    for (const Combination& c : combinations())
+    {
+        FixtureLoop own(fx, c, Stencil::half);
+        FixtureLoop gen(fx, c, Stencil::half, ForceField::PairPasses::generic);
+
+        unsigned farMask = 0;
+        for (std::size_t k = 0; k < PairModels::size; ++k)
+        {
+            farMask |= own.field.farModel(k) ? 1u << k : 0u;
+        }
+        const unsigned mask = c.models().activeMask();
+        for (const unsigned m : {mask, mask & ~(1u << lub)})
+        {
+            if (isSpecialised(m & ~farMask, SpecialisedNearSets()))
+            {
+                specialisedNear.insert(m & ~farMask);
+            }
+            else
+            {
+                generic += (m & ~farMask) != 0;
+            }
+            if (isSpecialised(m & farMask, SpecialisedFarSets()))
+            {
+                specialisedFar.insert(m & farMask);
+            }
+        }
+
+        expectBitwise(own.evaluate(), gen.evaluate(), c.name() + ": evaluate");
+
+        const double dt = 1e-3;
+        Histories keptOwn, keptGen;
+        const Forces a = own.advance(dt, keptOwn);
+        const Forces b = gen.advance(dt, keptGen);
+        expectBitwise(a, b, c.name() + ": advance");
+        ASSERT_EQ(keptOwn.size(), keptGen.size()) << c.name();
+        for (const auto& [ids, s] : keptOwn)
+        {
+            EXPECT_TRUE(sameState(s, keptGen[ids]))
+                << c.name() << ": history of (" << ids.first << ", " << ids.second << ")";
+        }
+
+        std::vector<LinearisedContact> la, lb;
+        expectBitwise
+        (
+            own.evaluateLinearised(la), gen.evaluateLinearised(lb),
+            c.name() + ": non-hydrodynamic"
+        );
+        ASSERT_EQ(la.size(), lb.size()) << c.name();
+        for (std::size_t k = 0; k < la.size(); ++k)
+        {
+            EXPECT_TRUE(sameLinearised(la[k], lb[k]))
+                << c.name() << ": linearised contact " << k;
+        }
+    }
+    // Both kinds of pass are compared: the fixture's combinations, with and
+    // without the lubrication (an implicit integrator's forces), include
+    // every specialised set and others
+    EXPECT_EQ(specialisedNear.size(), std::tuple_size_v<SpecialisedNearSets>);
+    EXPECT_EQ(specialisedFar.size(), std::tuple_size_v<SpecialisedFarSets>);
+    EXPECT_GT(generic, 0);
 }
 
 

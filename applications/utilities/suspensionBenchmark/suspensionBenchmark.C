@@ -58,6 +58,7 @@ Usage
         [-integrator velocityVerlet|implicitEuler|overdamped]
         [-off lubrication|contact|rolling|repulsion|attraction]...
         [-preshear 1] [-roofline] [-safety 0.2] [-rollingFriction 1]
+        [-genericPasses]
 
     Threads: OMP_NUM_THREADS. The particles start from a random
     non-overlapping packing; a few steps are taken before timing.
@@ -69,6 +70,9 @@ Usage
     -safety sets the automatic step's fraction of its stability limit
     (Simulation::Params, also for the shearing of -preshear);
     -rollingFriction sets mu_r of table3's rolling springs (default mu_C).
+    -genericPasses runs the generic pair passes whatever the set of models
+    (ForceField::PairPasses; the same results): what a set of
+    SpecialisedNearSets (forces/ForceModels.H) saves.
 \*---------------------------------------------------------------------------*/
 
 #include "core/Memory.H"
@@ -155,6 +159,7 @@ namespace
         std::optional<double> rollingFriction;  // mu_r, unset: mu_C
         std::string packingDir;
         bool brute = false;
+        bool genericPasses = false;
         bool header = false;
         bool roofline = false;
         std::uint64_t seed = 1;
@@ -244,6 +249,7 @@ namespace
                 o.off.push_back(m);
             }
             else if (a == "-brute") o.brute = true;
+            else if (a == "-genericPasses") o.genericPasses = true;
             else if (a == "-header") o.header = true;
             else if (a == "-roofline") o.roofline = true;
             else
@@ -527,6 +533,10 @@ int main(int argc, char** argv)
     sp.rho = rho;
     sp.integrator = o.integrator;
     sp.safety = o.safety;
+    if (o.genericPasses)
+    {
+        sp.pairPasses = ForceField::PairPasses::generic;
+    }
     Simulation::Checkpoint sheared;
     if (o.preshear > 0)
     {

@@ -159,7 +159,8 @@ Simulation::Simulation
     (
         std::move(models),
         domain_ ? domain_->distinctRadii(particles_.a) : particles_.a,
-        ghostSamples(domain_.get())
+        ghostSamples(domain_.get()),
+        params.pairPasses
     ),
     radii_(radiusRange(particles_, domain_)),
     search_

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <utility>
@@ -15,38 +16,68 @@ namespace suspension
 
 namespace
 {
-    constexpr bool sameString(const char* a, const char* b)
+    //- The bits of ForceModels::activeMask of the models of a list
+    template<class... Ms>
+    constexpr unsigned maskOf(ModelList<Ms...>)
     {
-        return *a == *b && (*a == '\0' || sameString(a + 1, b + 1));
+        return ((1u << detail::IndexOf<Ms, PairModels>::value) | ... | 0u);
     }
 
-    //- Whether M is an alternative of one of Ms (same contribution)
-    template<class M, class... Ms>
-    constexpr bool conflicts()
+    //- The central models of a list, appended to Central
+    template<class Central, class List>
+    struct CentralOf;
+
+    template<class... Cs>
+    struct CentralOf<ModelList<Cs...>, ModelList<>>
     {
-        return (sameString(M::contribution, Ms::contribution) || ... || false);
-    }
+        using type = ModelList<Cs...>;
+    };
 
-    template<std::size_t I, class List>
-    struct TypeAt;
-
-    template<std::size_t I, class M, class... Ms>
-    struct TypeAt<I, ModelList<M, Ms...>>
+    template<class... Cs, class M, class... Ms>
+    struct CentralOf<ModelList<Cs...>, ModelList<M, Ms...>>
     :
-        TypeAt<I - 1, ModelList<Ms...>>
+        CentralOf
+        <
+            std::conditional_t<M::central, ModelList<Cs..., M>, ModelList<Cs...>>,
+            ModelList<Ms...>
+        >
     {};
 
-    template<class M, class... Ms>
-    struct TypeAt<0, ModelList<M, Ms...>>
-    {
-        using type = M;
-    };
+    //- The models of the generic far pass
+    using CentralPairModels = CentralOf<ModelList<>, PairModels>::type;
 
     template<class... Ms>
     constexpr bool anyVelocities = (Ms::usesVelocities || ... || false);
 
+    //- Of the models Ms, those of the pass (mask): each, or null
     template<class... Ms>
-    constexpr bool anyHistory = (Ms::hasHistory || ... || false);
+    std::tuple<const Ms*...> modelsOn
+    (
+        const ForceModels& models,
+        unsigned mask,
+        ModelList<Ms...>
+    )
+    {
+        return std::tuple<const Ms*...>
+        (
+            ((mask & maskOf(ModelList<Ms>())) ? models.get<Ms>() : nullptr)...
+        );
+    }
+
+    //- The gap() of each model of the pass, -infinity (no pair within it)
+    //  for those that are off
+    template<class... Ms>
+    std::array<double, sizeof...(Ms)> gapsOf(const std::tuple<const Ms*...>& ms)
+    {
+        return
+        {
+            (
+                std::get<const Ms*>(ms)
+              ? std::get<const Ms*>(ms)->gap()
+              : -std::numeric_limits<double>::infinity()
+            )...
+        };
+    }
 
     //- The kernel of M, called as its traits say (forces/PairModel.H)
     template<class M>
@@ -118,14 +149,16 @@ ForceField::ForceField
 (
     ForceModels models,
     const std::vector<double>& radii,
-    GhostSamples ghostSamples
+    GhostSamples ghostSamples,
+    PairPasses passes
 )
 :
     models_(std::move(models)),
-    ghostSamples_(std::move(ghostSamples)),
+    passes_(passes),
     farMask_(0),
     nearGap_(0),
-    farGap_(0)
+    farGap_(0),
+    ghostSamples_(std::move(ghostSamples))
 {
     models_.prepare(radii);
 
@@ -161,35 +194,26 @@ ForceField::ForceField
 
 // * * * * * * * * * * * * * * * * * Dispatch  * * * * * * * * * * * * * * * //
 
-template<class Pass, std::size_t I, class... Chosen>
-void ForceField::dispatch(unsigned mask, const Pass& pass)
+template<class... Sets, class Generic, class Pass>
+void ForceField::dispatch
+(
+    unsigned mask,
+    std::tuple<Sets...>,
+    Generic generic,
+    const Pass& pass
+) const
 {
-    if constexpr (I == PairModels::size)
+    bool done = false;
+    if (passes_ == PairPasses::specialised)
     {
-        pass(ModelList<Chosen...>());
+        (
+            (!done && mask == maskOf(Sets()) ? (pass(Sets()), done = true) : false),
+            ...
+        );
     }
-    else
+    if (!done)
     {
-        using M = typename TypeAt<I, PairModels>::type;
-        if (mask & (1u << I))
-        {
-            if constexpr (conflicts<M, Chosen...>())
-            {
-                throw std::logic_error
-                (
-                    std::string("ForceField: ") + M::typeName
-                  + " is on with an alternative of it"
-                );
-            }
-            else
-            {
-                dispatch<Pass, I + 1, Chosen..., M>(mask, pass);
-            }
-        }
-        else
-        {
-            dispatch<Pass, I + 1, Chosen...>(mask, pass);
-        }
+        pass(generic);
     }
 }
 
@@ -276,7 +300,7 @@ namespace
         bool linearised = false;
     };
 
-    //- Every model of Ms within its gap() on one pair: their sum, the
+    //- Every model of Ms that is on within its gap() on one pair: their sum, the
     //  stresslet of each into S[m], and (linearise) the springs of the
     //  linearisable ones about the state the pair keeps (the advanced one,
     //  or the one read)
@@ -284,6 +308,7 @@ namespace
     PairEvaluation evaluatePair
     (
         const std::tuple<const Ms*...>& ms,
+        const std::array<double, sizeof...(Ms)>& gap,
         const PairGeometry& g,
         const PairKinematics* kin,
         const ContactState& old,
@@ -300,9 +325,9 @@ namespace
         (
             [&]
             {
-                const Ms& model = *std::get<const Ms*>(ms);
-                if (g.h < model.gap())
+                if (g.h < gap[m])
                 {
+                    const Ms& model = *std::get<const Ms*>(ms);
                     const PairForce f = evalModel(model, g, kin, old, next, dt);
                     e.total.F += f.F;
                     e.total.Ti += f.Ti;
@@ -399,7 +424,8 @@ void ForceField::secondParticles(const PairList& near, const Output& out)
 template<class... Ms>
 void ForceField::nearPass
 (
-    ModelList<Ms...>,
+    ModelList<Ms...> list,
+    unsigned mask,
     const Particles& p,
     const LeesEdwardsBox& box,
     const PairList& near,
@@ -410,11 +436,6 @@ void ForceField::nearPass
 {
     static_assert
     (
-        (0 + ... + int(Ms::hasHistory)) <= 1,
-        "a pair carries one ContactState: at most one model with history"
-    );
-    static_assert
-    (
         ((!linearisable<Ms> || Ms::usesVelocities) && ...),
         "a model with stiffness() is linearised about the velocities"
     );
@@ -422,14 +443,19 @@ void ForceField::nearPass
     const std::size_t nB = reductionBlocks(N);
     clearLinearised(nB, out);
     const std::size_t nC = contributionNames().size();
-    const std::tuple<const Ms*...> ms(models_.get<Ms>()...);
+    const std::tuple<const Ms*...> ms = modelsOn(models_, mask, list);
+    const std::array<double, sizeof...(Ms)> gap = gapsOf(ms);
+    const bool on[] = {(std::get<const Ms*>(ms) != nullptr)...};
     const int contribution[] = {contributionIndex(Ms::contribution)...};
-    const double maxGap = std::max({std::get<const Ms*>(ms)->gap()...});
+    const double maxGap = *std::max_element(gap.begin(), gap.end());
+    const bool velocitiesOn =
+        ((std::get<const Ms*>(ms) && Ms::usesVelocities) || ...);
+    const bool historyOn = ((std::get<const Ms*>(ms) && Ms::hasHistory) || ...);
     const double imageVelocity = box.imageVelocity();
     const bool perParticle = out.S != nullptr;
     const bool ghosts = !p.ghost.empty();
-    const bool readHistory = anyHistory<Ms...> && !near.contactOf.empty();
-    const bool advanceHistory = anyHistory<Ms...> && history;
+    const bool readHistory = historyOn && !near.contactOf.empty();
+    const bool advanceHistory = historyOn && history;
     if (advanceHistory && near.contactOf.size() != near.nPairs())
     {
         throw std::logic_error
@@ -442,7 +468,8 @@ void ForceField::nearPass
     {
         blockContacts_.resize(nB);
     }
-    const bool linearise = (linearisable<Ms> || ...) && out.contacts;
+    const bool linearise =
+        ((std::get<const Ms*>(ms) && linearisable<Ms>) || ...) && out.contacts;
     resizeScratch(slotForce_, near.nPairs());
     resizeScratch(slotOn_, near.nPairs());
     if (perParticle)
@@ -513,25 +540,25 @@ void ForceField::nearPass
                 {
                     if constexpr (anyVelocities<Ms...>)
                     {
-                        const PairKinematics kin
+                        if (velocitiesOn)
                         {
-                            uRel_[i], uRel_[j], wRel_[i], wRel_[j], du,
-                            p.omega[i], p.omega[j], Ei, ambient_[j].E()
-                        };
-                        return evaluatePair
-                        (
-                            ms, g, &kin, old, next, dt, perParticle,
-                            linearise, advanceHistory, sums
-                        );
+                            const PairKinematics kin
+                            {
+                                uRel_[i], uRel_[j], wRel_[i], wRel_[j], du,
+                                p.omega[i], p.omega[j], Ei, ambient_[j].E()
+                            };
+                            return evaluatePair
+                            (
+                                ms, gap, g, &kin, old, next, dt, perParticle,
+                                linearise, advanceHistory, sums
+                            );
+                        }
                     }
-                    else
-                    {
-                        return evaluatePair
-                        (
-                            ms, g, nullptr, old, next, dt, perParticle,
-                            linearise, advanceHistory, sums
-                        );
-                    }
+                    return evaluatePair
+                    (
+                        ms, gap, g, nullptr, old, next, dt, perParticle,
+                        linearise, advanceHistory, sums
+                    );
                 }();
                 if (e.linearised)
                 {
@@ -577,7 +604,10 @@ void ForceField::nearPass
         }
         for (std::size_t m = 0; m < sizeof...(Ms); ++m)
         {
-            blockS_[b*nC + contribution[m]] += S[m];
+            if (on[m])
+            {
+                blockS_[b*nC + contribution[m]] += S[m];
+            }
         }
     }
     gatherBlocks(advanceHistory ? history : nullptr, out);
@@ -590,26 +620,25 @@ void ForceField::nearPass
 template<class... Ms>
 void ForceField::farPass
 (
-    ModelList<Ms...>,
+    ModelList<Ms...> list,
+    unsigned mask,
     const Particles& p,
     const LeesEdwardsBox& box,
     const PairRows& far,
     const Output& out
 )
 {
-    if constexpr (!(Ms::central && ... && true))
-    {
-        throw std::logic_error("ForceField: a non-central model in the far pass");
-    }
-    else if constexpr (sizeof...(Ms) > 0)
+    static_assert((Ms::central && ...), "the far pass takes central models only");
+    if constexpr (sizeof...(Ms) > 0)
     {
         constexpr std::size_t nM = sizeof...(Ms);
         const std::size_t N = p.size();
         const std::size_t nC = contributionNames().size();
-        const std::tuple<const Ms*...> ms(models_.get<Ms>()...);
+        const std::tuple<const Ms*...> ms = modelsOn(models_, mask, list);
+        const std::array<double, nM> gap = gapsOf(ms);
+        const bool on[] = {(std::get<const Ms*>(ms) != nullptr)...};
         const int contribution[] = {contributionIndex(Ms::contribution)...};
-        const double gap[] = {std::get<const Ms*>(ms)->gap()...};
-        const double maxGap = *std::max_element(gap, gap + nM);
+        const double maxGap = *std::max_element(gap.begin(), gap.end());
         const bool perParticle = out.S != nullptr;
 
         // Over the particles i, their rows: the central force f n of each
@@ -675,7 +704,10 @@ void ForceField::farPass
             }
             for (std::size_t m = 0; m < nM; ++m)
             {
-                blockS_[b*nC + contribution[m]] += 0.5*symmetricMatrix(W[m]);
+                if (on[m])
+                {
+                    blockS_[b*nC + contribution[m]] += 0.5*symmetricMatrix(W[m]);
+                }
             }
         }
     }
@@ -801,23 +833,34 @@ ForceSummary ForceField::run
                 bit <<= 1;
             });
         }
-        dispatch(mask & ~farMask_, [&](auto models)
+        const unsigned nearMask = mask & ~farMask_;
+        const unsigned farOn = mask & farMask_;
+        if (nearMask)
         {
-            if constexpr (std::is_same_v<decltype(models), ModelList<>>)
-            {
-                // No model here: the contacts are still counted
-                // (Simulation's checks of the overlap need them)
-                countContacts(p, box, near, out);
-            }
-            else
-            {
-                nearPass(models, p, box, near, history, dt, out);
-            }
-        });
-        dispatch(mask & farMask_, [&](auto models)
+            dispatch
+            (
+                nearMask, SpecialisedNearSets(), PairModels(), [&](auto models)
+                {
+                    nearPass(models, nearMask, p, box, near, history, dt, out);
+                }
+            );
+        }
+        else
         {
-            farPass(models, p, box, far, out);
-        });
+            // No model here: the contacts are still counted (Simulation's
+            // checks of the overlap need them)
+            countContacts(p, box, near, out);
+        }
+        if (farOn)
+        {
+            dispatch
+            (
+                farOn, SpecialisedFarSets(), CentralPairModels(), [&](auto models)
+                {
+                    farPass(models, farOn, p, box, far, out);
+                }
+            );
+        }
     }
 
     // Sums in block order
