@@ -3,7 +3,7 @@
 # exactly as the user guide's "Adding a force model" says (registerModel.sh:
 # the header HarmonicRepulsion.H, its registry line, its test), and show that
 # nothing else has to change: the diff of the copy, a build of everything
-# (./Allwmake), every ctest test, and a case run with the model on whose
+# (./Allwmake), every other ctest test, and a case run with the model on whose
 # rheology has the model's own column. Minutes (a full build); not part of
 # ctest.
 #
@@ -41,7 +41,8 @@ inCopy()
 {
     env -i HOME="$scratch/home" USER="$(id -un)" PATH=/usr/local/bin:/usr/bin:/bin \
         WSF_ARCH_FLAGS="${WSF_ARCH_FLAGS--march=native}" \
-        bash -c 'cd "$1" && shift && . etc/bashrc > /dev/null && "$@"' _ "$@"
+        bash -c '. "$1"/etc/bashrc > /dev/null && cd "$2" && shift 2 && "$@"' \
+        _ "$src" "$@"
 }
 
 echo "== build (log: $scratch/build.log)"
@@ -52,8 +53,11 @@ echo "== docs/models.md, generated from the registry (suspensionModels)"
 inCopy "$src" sh -c 'suspensionModels > docs/models.md'
 git -C "$src" diff --stat -- docs/models.md
 
+# Every test but extensibility.registryTakesANewModel, which adds the model
+# to a tree that does not have it yet (the copy has it now)
 echo "== ctest (log: $scratch/ctest.log)"
-inCopy "$src" ctest --test-dir build -j"$jobs" > "$scratch/ctest.log" 2>&1 \
+inCopy "$src" ctest --test-dir build -j"$jobs" -E '^extensibility[.]' \
+    > "$scratch/ctest.log" 2>&1 \
     || { grep -E "tests passed|Failed|\*\*\*" "$scratch/ctest.log" >&2; exit 1; }
 grep "tests passed" "$scratch/ctest.log"
 grep -q "HarmonicRepulsion.TwoSpheresThroughThePairLoop" "$scratch/ctest.log" \

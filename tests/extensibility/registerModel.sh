@@ -21,6 +21,8 @@ text = open(path).read()
 include = '#include "forces/VanDerWaalsAttraction.H"\n'
 # The last model of PairModels: the entry before its closing '>;'
 last = re.compile(r'(using PairModels = ModelList\n<\n(?:    \w+,\n)*    \w+)\n>;')
+if 'HarmonicRepulsion' in text:
+    sys.exit("registerModel.sh: " + path + " registers HarmonicRepulsion already")
 if include not in text or not last.search(text):
     sys.exit("registerModel.sh: " + path + " has no PairModels list to extend")
 text = text.replace(include, include + '#include "forces/HarmonicRepulsion.H"\n', 1)

@@ -207,13 +207,17 @@ void ForceField::dispatch
     if (passes_ == PairPasses::specialised)
     {
         (
-            (!done && mask == maskOf(Sets()) ? (pass(Sets()), done = true) : false),
+            (
+                !done && mask == maskOf(Sets())
+              ? (pass(Sets(), std::true_type()), done = true)
+              : false
+            ),
             ...
         );
     }
     if (!done)
     {
-        pass(generic);
+        pass(generic, std::false_type());
     }
 }
 
@@ -421,10 +425,11 @@ void ForceField::secondParticles(const PairList& near, const Output& out)
 }
 
 
-template<class... Ms>
+template<bool AllOn, class... Ms>
 void ForceField::nearPass
 (
     ModelList<Ms...> list,
+    std::bool_constant<AllOn>,
     unsigned mask,
     const Particles& p,
     const LeesEdwardsBox& box,
@@ -448,8 +453,9 @@ void ForceField::nearPass
     const bool on[] = {(std::get<const Ms*>(ms) != nullptr)...};
     const int contribution[] = {contributionIndex(Ms::contribution)...};
     const double maxGap = *std::max_element(gap.begin(), gap.end());
-    const bool velocitiesOn =
-        ((std::get<const Ms*>(ms) && Ms::usesVelocities) || ...);
+    const bool velocitiesOn = AllOn
+      ? anyVelocities<Ms...>
+      : ((std::get<const Ms*>(ms) && Ms::usesVelocities) || ...);
     const bool historyOn = ((std::get<const Ms*>(ms) && Ms::hasHistory) || ...);
     const double imageVelocity = box.imageVelocity();
     const bool perParticle = out.S != nullptr;
@@ -540,7 +546,7 @@ void ForceField::nearPass
                 {
                     if constexpr (anyVelocities<Ms...>)
                     {
-                        if (velocitiesOn)
+                        if (AllOn || velocitiesOn)
                         {
                             const PairKinematics kin
                             {
@@ -604,7 +610,7 @@ void ForceField::nearPass
         }
         for (std::size_t m = 0; m < sizeof...(Ms); ++m)
         {
-            if (on[m])
+            if (AllOn || on[m])
             {
                 blockS_[b*nC + contribution[m]] += S[m];
             }
@@ -617,10 +623,11 @@ void ForceField::nearPass
 
 // * * * * * * * * * * * * * * * * Far pass  * * * * * * * * * * * * * * * * //
 
-template<class... Ms>
+template<bool AllOn, class... Ms>
 void ForceField::farPass
 (
     ModelList<Ms...> list,
+    std::bool_constant<AllOn>,
     unsigned mask,
     const Particles& p,
     const LeesEdwardsBox& box,
@@ -704,7 +711,7 @@ void ForceField::farPass
             }
             for (std::size_t m = 0; m < nM; ++m)
             {
-                if (on[m])
+                if (AllOn || on[m])
                 {
                     blockS_[b*nC + contribution[m]] += 0.5*symmetricMatrix(W[m]);
                 }
@@ -839,9 +846,13 @@ ForceSummary ForceField::run
         {
             dispatch
             (
-                nearMask, SpecialisedNearSets(), PairModels(), [&](auto models)
+                nearMask, SpecialisedNearSets(), PairModels(),
+                [&](auto models, auto allOn)
                 {
-                    nearPass(models, nearMask, p, box, near, history, dt, out);
+                    nearPass
+                    (
+                        models, allOn, nearMask, p, box, near, history, dt, out
+                    );
                 }
             );
         }
@@ -855,9 +866,10 @@ ForceSummary ForceField::run
         {
             dispatch
             (
-                farOn, SpecialisedFarSets(), CentralPairModels(), [&](auto models)
+                farOn, SpecialisedFarSets(), CentralPairModels(),
+                [&](auto models, auto allOn)
                 {
-                    farPass(models, farOn, p, box, far, out);
+                    farPass(models, allOn, farOn, p, box, far, out);
                 }
             );
         }
