@@ -43,7 +43,8 @@ def time_v(path):
             secs, int(out["Maximum resident set size (kbytes)"]), status)
 
 
-def lfdem_steps(run_dir, start):
+def lfdem_data(run_dir):
+    """LF_DEM's data_*.dat of a run: ({column name: index}, rows of floats)"""
     files = glob.glob(os.path.join(run_dir, "data_*.dat"))
     if len(files) != 1:
         raise SystemExit("%s: expected one data_*.dat" % run_dir)
@@ -59,6 +60,11 @@ def lfdem_steps(run_dir, start):
                 continue
             if line.strip():
                 rows.append([float(v) for v in line.split()])
+    return cols, rows
+
+
+def lfdem_steps(run_dir, start):
+    cols, rows = lfdem_data(run_dir)
     s, dt = cols["cumulated shear strain"], cols["dt"]
     total = window = 0
     for prev, r in zip(rows, rows[1:]):
