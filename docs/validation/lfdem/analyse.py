@@ -32,6 +32,7 @@ docs/validation.md between its <!-- table:lfdem --> markers).
 import argparse
 import glob
 import os
+import re
 import sys
 
 import matplotlib
@@ -61,6 +62,8 @@ def lfdemSeries(run):
     if len(glob.glob(os.path.join(run, "data_*.dat"))) != 1:
         return None
     names, rows = lfdem_data(run)
+    if not rows:
+        return None
     a = np.array([r for r in rows if len(r) == len(rows[0])])   # a running LF_DEM's last row may be partial
     c = {k: a[:, i] for k, i in names.items()}
     return {"strain": c["cumulated shear strain"], "etaR": c["viscosity"],
@@ -110,13 +113,16 @@ def main():
     a = ap.parse_args()
     rows = []
     for run in sorted(glob.glob(os.path.join(a.outdir, "*-*-s*"))):
-        code, phi, seed = os.path.basename(run).split("-")
-        if code not in CODES:
+        m = re.fullmatch(r"(\w+)-([0-9.]+)-s([0-9]+)", os.path.basename(run))
+        if not (m and m.group(1) in CODES and os.path.isdir(run)):
             continue
+        code, phi, seed = m.group(1), m.group(2), "s" + m.group(3)
         s = oursSeries(run, 200) if code.startswith("ours") else lfdemSeries(run)
         if s is None or s["strain"][-1] < a.end - 1e-6:
             print(f"{run}: not at strain {a.end:g}, left out", file=sys.stderr)
             continue
+        keep = s["strain"] <= a.end + 1e-6                 # a longer run: its first E strain units
+        s = {k: v[keep] for k, v in s.items()}
         row = {"code": code, "phi": phi, "seed": seed[1:], "strain_end": float(round(s["strain"][-1], 6))}
         for q in QUANTITIES:
             blocks, length = blockMeans(s["strain"], s[q], a.discard, a.blocks)
